@@ -1,0 +1,23 @@
+"""jointwear: planar mechanisms with revolute clearance joints, contact, friction and wear.
+
+After P. Flores, "Modeling and simulation of wear in revolute clearance joints in multibody
+systems", Mechanism and Machine Theory 44 (2009) 1211-1222.
+"""
+
+__version__ = "0.1.0"
+
+from .model import Model, ModelError, load_model
+from .results import Results, load_results
+from .run import run
+from .simulate import simulate
+
+__all__ = [
+    "Model",
+    "ModelError",
+    "Results",
+    "__version__",
+    "load_model",
+    "load_results",
+    "run",
+    "simulate",
+]

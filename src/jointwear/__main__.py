@@ -1,0 +1,5 @@
+"""``python -m jointwear`` runs the command-line interface."""
+
+from .cli import app
+
+app()

@@ -1,0 +1,142 @@
+"""Command-line interface: thin wrappers over ``run``, ``load_model`` and the plots.
+
+Exit codes: 0 success, 1 the run ended without reaching its end time (interrupted or a
+solver failure; the results folder holds what was computed), 2 invalid input (one line per
+problem on stderr, no traceback).
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from pathlib import Path
+from typing import Annotated
+
+import typer
+from rich.console import Console
+from rich.markup import escape
+from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn, TimeRemainingColumn
+from rich.table import Table
+
+from .assembly import assemble
+from .model import ModelError, load_model
+from .plots import save_figures
+from .results import load_results
+from .run import run as run_model
+from .system import build_system
+
+app = typer.Typer(add_completion=False, no_args_is_help=True, help=__doc__.splitlines()[0])
+err = Console(stderr=True)
+out = Console()
+PROGRESS_AFTER_S = 1.0  # show a progress bar only for runs longer than this
+
+ModelPath = Annotated[Path, typer.Argument(help="TOML model file.", show_default=False)]
+Overrides = Annotated[
+    list[str] | None,
+    typer.Option("--set", help="Override a model value: dotted.path=value (repeatable)."),
+]
+
+
+def _fail(error: ModelError) -> typer.Exit:
+    for line in error.problems:
+        err.print(line, markup=False, highlight=False)
+    return typer.Exit(code=2)
+
+
+class _ProgressBar:
+    """A rich progress bar that appears only once a run has lasted PROGRESS_AFTER_S."""
+
+    def __init__(self) -> None:
+        self.start = time.perf_counter()
+        self.bar: Progress | None = None
+        self.task = 0
+
+    def __call__(self, t: float, t_end: float) -> None:
+        if self.bar is None:
+            if time.perf_counter() - self.start < PROGRESS_AFTER_S:
+                return
+            self.bar = Progress(
+                TextColumn("simulating"),
+                BarColumn(),
+                TextColumn("t = {task.completed:.4g} / {task.total:.4g} s"),
+                TimeElapsedColumn(),
+                TextColumn("ETA"),
+                TimeRemainingColumn(),
+                console=err,
+                transient=True,
+            )
+            self.bar.start()
+            self.task = self.bar.add_task("run", total=t_end)
+        self.bar.update(self.task, completed=t)
+
+    def close(self) -> None:
+        if self.bar is not None:
+            self.bar.stop()
+
+
+@app.command()
+def run(
+    model: ModelPath,
+    out_dir: Annotated[Path, typer.Option("--out", help="Results folder.")] = Path("results"),
+    t_end: Annotated[float | None, typer.Option("--t-end", help="End time [s].")] = None,
+    overrides: Overrides = None,
+    figures: Annotated[bool, typer.Option("--figures/--no-figures", help="Draw figures.")] = True,
+) -> None:
+    """Simulate MODEL and write the results folder (summary, time series, figures)."""
+    settings = list(overrides or [])
+    if t_end is not None:
+        settings.append(f"solver.t_end={t_end!r}")
+    bar = _ProgressBar()
+    try:
+        results = run_model(model, out_dir, overrides=settings, figures=figures, progress=bar)
+    except ModelError as error:
+        raise _fail(error) from None
+    finally:
+        bar.close()
+    stats = results.summary["stats"]
+    out.print(
+        f"{results.status}: {results.message}; t = {stats['t_reached']:.6g} s, "
+        f"{stats['accepted_steps']} steps, {stats['simulation_wall_s']:.3g} s wall"
+    )
+    out.print(f"results in {out_dir}")
+    if results.status != "success":
+        raise typer.Exit(code=1)
+
+
+@app.command()
+def check(model: ModelPath, overrides: Overrides = None) -> None:
+    """Validate MODEL, assemble it and print its degrees of freedom and initial pose."""
+    try:
+        parsed = load_model(model, overrides or [])
+        assembly = assemble(parsed, build_system(parsed))
+    except ModelError as error:
+        raise _fail(error) from None
+    out.print(f"model '{parsed.name}': valid")
+    out.print(
+        f"degrees of freedom: {assembly.dof_without_drivers} (joints only), "
+        f"{assembly.dof} with drivers"
+    )
+    out.print(
+        f"assembled in {assembly.iterations} Newton iterations, residual {assembly.residual:.2e}"
+    )
+    table = Table(title="initial pose")
+    for column in ("body", "x [m]", "y [m]", "phi [deg]", "vx [m/s]", "vy [m/s]", "omega [rad/s]"):
+        table.add_column(escape(column), justify="right")
+    n = assembly.y0.shape[0] // 2
+    for i, body in enumerate(parsed.bodies):
+        x, y, phi = assembly.y0[3 * i : 3 * i + 3]
+        vx, vy, w = assembly.y0[n + 3 * i : n + 3 * i + 3]
+        table.add_row(
+            body.name, *(f"{v:.6g}" for v in (x, y, math.degrees(phi), vx, vy, w))
+        )
+    out.print(table)
+
+
+@app.command()
+def plot(folder: Annotated[Path, typer.Argument(help="Results folder.")]) -> None:
+    """Draw (again) the figures of a results folder into FOLDER/figures."""
+    if not (folder / "summary.json").is_file():
+        err.print(f"{folder}: not a results folder (no summary.json)", markup=False)
+        raise typer.Exit(code=2)
+    for path in save_figures(load_results(folder), folder / "figures"):
+        out.print(str(path))

@@ -1,0 +1,78 @@
+"""Integer codes shared by the kernels and the Python API.
+
+The kernels see a law or a joint kind only as one of these integers; ``model.py`` maps
+the model file's names onto them.
+"""
+
+from enum import IntEnum
+
+
+class JointKind(IntEnum):
+    """Kinds of ideal kinematic joints (rows of the constraint table)."""
+
+    REVOLUTE = 0
+    TRANSLATIONAL = 1
+
+
+class DriverKind(IntEnum):
+    """What a driving constraint prescribes as a function of time."""
+
+    ANGLE = 0  # phi_j - phi_i = f(t); i may be the ground
+    DISTANCE = 1  # slide of a translational joint along its axis = f(t)
+
+
+class FunctionKind(IntEnum):
+    """Functions of time f(t) used by drivers and applied loads."""
+
+    POLYNOMIAL = 0  # sum_k c_k t^k
+    HARMONIC = 1  # offset + amplitude * sin(omega t + phase)
+
+
+class ForceKind(IntEnum):
+    """Applied loads."""
+
+    POINT_FORCE = 0
+    TORQUE = 1
+    SPRING_DAMPER = 2
+    ROTATIONAL_SPRING_DAMPER = 3
+
+
+class Method(IntEnum):
+    """Integrators."""
+
+    DOPRI5 = 0
+    ABM = 1
+
+
+class Status(IntEnum):
+    """Outcome of a chunk of integration (``loop.advance``) or of a whole run."""
+
+    RUNNING = 0  # chunk ended at its stop time; the run goes on
+    SUCCESS = 1  # the end time was reached
+    STEP_UNDERFLOW = 2
+    NON_FINITE = 3
+    SINGULAR = 4
+    MAX_STEPS = 5
+    INTERRUPTED = 6
+
+
+class EventDirection(IntEnum):
+    """Which sign changes of an event function count."""
+
+    ANY = 0
+    RISING = 1
+    FALLING = 2
+
+
+class Counter(IntEnum):
+    """Slots of the run-statistics counter array carried in the loop state."""
+
+    ACCEPTED = 0
+    REJECTED = 1
+    RHS_EVALS = 2
+    MIN_STEP_HITS = 3
+    OUTPUT_ROWS = 4
+    EVENTS = 5
+
+
+N_COUNTERS = len(Counter)

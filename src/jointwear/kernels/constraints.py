@@ -1,0 +1,123 @@
+"""Kinematic constraints Phi(q, t) = 0 of ideal joints and drivers, their Jacobian and gamma.
+
+| symbol | meaning | unit |
+|---|---|---|
+| phi | constraint values Phi | m or rad |
+| cq | Jacobian Phi_q (rows x 3 n_bodies) | 1, m |
+| gamma | right side of the acceleration equation Phi_q q'' = gamma (paper Eq. 3) | m/s^2, rad/s^2 |
+| phi_t | partial time derivative of Phi (drivers) | m/s, rad/s |
+
+Rows: revolute 2 (Phi = r_i + A_i s_i - r_j - A_j s_j), translational 2 (relative angle, and
+the second point on the first body's line), driver 1. The formulas follow Nikravesh (1988),
+ch. 4 and 6; the paper's Eq. (1)-(3).
+"""
+
+from numba import njit
+
+from .codes import DriverKind, JointKind
+from .functions import evaluate
+from .kinematics import angle, angular_velocity, point_position, point_velocity, rotate
+
+
+@njit(cache=True)
+def _add(cq, r, b, k, value):
+    """Add value at row r, coordinate k (0 x, 1 y, 2 phi) of body b (skipped for the ground)."""
+    if b >= 0:
+        cq[r, 3 * b + k] += value
+
+
+@njit(cache=True)
+def _revolute(q, qd, i, j, s, r, phi, cq, gamma):
+    aix, aiy = rotate(q, i, s[0, 0], s[0, 1])
+    ajx, ajy = rotate(q, j, s[1, 0], s[1, 1])
+    pix, piy = point_position(q, i, s[0, 0], s[0, 1])
+    pjx, pjy = point_position(q, j, s[1, 0], s[1, 1])
+    phi[r] = pix - pjx
+    phi[r + 1] = piy - pjy
+    _add(cq, r, i, 0, 1.0)
+    _add(cq, r, i, 2, -aiy)
+    _add(cq, r, j, 0, -1.0)
+    _add(cq, r, j, 2, ajy)
+    _add(cq, r + 1, i, 1, 1.0)
+    _add(cq, r + 1, i, 2, aix)
+    _add(cq, r + 1, j, 1, -1.0)
+    _add(cq, r + 1, j, 2, -ajx)
+    wi2 = angular_velocity(qd, i) ** 2
+    wj2 = angular_velocity(qd, j) ** 2
+    gamma[r] = aix * wi2 - ajx * wj2
+    gamma[r + 1] = aiy * wi2 - ajy * wj2
+
+
+@njit(cache=True)
+def line_projection(q, qd, i, j, s, vx, vy, r, phi, cq, gamma):
+    """Row r: f = (A_i v) . (r_Pj - r_Pi), the second point projected on a body-i direction v.
+
+    Used for the translational joint (v normal to the axis, f = 0) and for distance drivers
+    (v along the axis, f = slide). Fills phi[r], cq[r] and gamma[r] (no time dependence).
+    """
+    nx, ny = rotate(q, i, vx, vy)
+    aix, aiy = rotate(q, i, s[0, 0], s[0, 1])
+    ajx, ajy = rotate(q, j, s[1, 0], s[1, 1])
+    pix, piy = point_position(q, i, s[0, 0], s[0, 1])
+    pjx, pjy = point_position(q, j, s[1, 0], s[1, 1])
+    dx = pjx - pix
+    dy = pjy - piy
+    phi[r] = nx * dx + ny * dy
+    _add(cq, r, i, 0, -nx)
+    _add(cq, r, i, 1, -ny)
+    _add(cq, r, i, 2, -ny * dx + nx * dy - (nx * -aiy + ny * aix))
+    _add(cq, r, j, 0, nx)
+    _add(cq, r, j, 1, ny)
+    _add(cq, r, j, 2, nx * -ajy + ny * ajx)
+    wi = angular_velocity(qd, i)
+    wj = angular_velocity(qd, j)
+    vix, viy = point_velocity(q, qd, i, s[0, 0], s[0, 1])
+    vjx, vjy = point_velocity(q, qd, j, s[1, 0], s[1, 1])
+    ddx = vjx - vix
+    ddy = vjy - viy
+    rest = -(nx * dx + ny * dy) * wi * wi
+    rest += 2.0 * wi * (-ny * ddx + nx * ddy)
+    rest += nx * (aix * wi * wi - ajx * wj * wj) + ny * (aiy * wi * wi - ajy * wj * wj)
+    gamma[r] = -rest
+
+
+@njit(cache=True)
+def evaluate_constraints(t, q, qd, sys, phi, cq, gamma, phi_t):
+    """Fill Phi, Phi_q, gamma and Phi_t for all joints and drivers of the system."""
+    cq[:, :] = 0.0
+    phi_t[:] = 0.0
+    for jt in range(sys.joint_kind.shape[0]):
+        i = sys.joint_body[jt, 0]
+        j = sys.joint_body[jt, 1]
+        s = sys.joint_point[jt]
+        r = sys.joint_row[jt]
+        if sys.joint_kind[jt] == JointKind.REVOLUTE:
+            _revolute(q, qd, i, j, s, r, phi, cq, gamma)
+        else:  # translational: relative angle, then the normal-to-axis projection
+            phi[r] = angle(q, j) - angle(q, i) - sys.joint_angle0[jt]
+            _add(cq, r, i, 2, -1.0)
+            _add(cq, r, j, 2, 1.0)
+            gamma[r] = 0.0
+            ax = sys.joint_axis[jt, 0]
+            ay = sys.joint_axis[jt, 1]
+            line_projection(q, qd, i, j, s, -ay, ax, r + 1, phi, cq, gamma)
+    for d in range(sys.driver_kind.shape[0]):
+        r = sys.driver_row[d]
+        fn = sys.driver_function[d]
+        f, fd, fdd = evaluate(sys.function_kind[fn], sys.function_param[fn], t)
+        if sys.driver_kind[d] == DriverKind.ANGLE:
+            i = sys.driver_body[d, 0]
+            j = sys.driver_body[d, 1]
+            phi[r] = angle(q, j) - angle(q, i) - f
+            _add(cq, r, i, 2, -1.0)
+            _add(cq, r, j, 2, 1.0)
+            gamma[r] = fdd
+        else:
+            jt = sys.driver_joint[d]
+            line_projection(
+                q, qd, sys.joint_body[jt, 0], sys.joint_body[jt, 1], sys.joint_point[jt],
+                sys.joint_axis[jt, 0], sys.joint_axis[jt, 1], r, phi, cq, gamma,
+            )
+            phi[r] -= f
+            gamma[r] += fdd
+        phi_t[r] = -fd

@@ -1,0 +1,119 @@
+"""Applied loads as generalised forces g (paper Eq. 4), and their potential energy.
+
+| symbol | meaning | unit |
+|---|---|---|
+| g | generalised force on (x, y, phi) of every body | N, N, N m |
+| gravity | acceleration of gravity (g_x, g_y) | m/s^2 |
+| k, c | spring stiffness and damping | N/m, N s/m (rotational: N m/rad, N m s/rad) |
+| l0 | free length (rotational: free angle) | m (rad) |
+
+A force F at body point s adds (F_x, F_y, (A s) x F) to that body's entries.
+"""
+
+import math
+
+from numba import njit
+
+from .codes import ForceKind
+from .functions import evaluate
+from .kinematics import (
+    angle,
+    angular_velocity,
+    point_position,
+    point_velocity,
+    rotate,
+)
+
+
+@njit(cache=True)
+def _apply(q, g, b, sx, sy, fx, fy):
+    """Add force (fx, fy) [N] acting at body point s [m] to g."""
+    if b < 0:
+        return
+    ax, ay = rotate(q, b, sx, sy)
+    g[3 * b] += fx
+    g[3 * b + 1] += fy
+    g[3 * b + 2] += ax * fy - ay * fx
+
+
+@njit(cache=True)
+def _function_value(sys, fn, t):
+    if fn < 0:
+        return 0.0
+    return evaluate(sys.function_kind[fn], sys.function_param[fn], t)[0]
+
+
+@njit(cache=True)
+def _spring_axis(q, sys, e):
+    """Unit vector u from point 1 to point 2 of load e, and the length between them [m]."""
+    s = sys.force_point[e]
+    p1x, p1y = point_position(q, sys.force_body[e, 0], s[0, 0], s[0, 1])
+    p2x, p2y = point_position(q, sys.force_body[e, 1], s[1, 0], s[1, 1])
+    dx = p2x - p1x
+    dy = p2y - p1y
+    length = math.sqrt(dx * dx + dy * dy)
+    return dx / length, dy / length, length
+
+
+@njit(cache=True)
+def _spring_rate(q, qd, sys, e, ux, uy):
+    """Rate of change of the length between the two points of load e [m/s]."""
+    s = sys.force_point[e]
+    v1x, v1y = point_velocity(q, qd, sys.force_body[e, 0], s[0, 0], s[0, 1])
+    v2x, v2y = point_velocity(q, qd, sys.force_body[e, 1], s[1, 0], s[1, 1])
+    return ux * (v2x - v1x) + uy * (v2y - v1y)
+
+
+@njit(cache=True)
+def applied_forces(t, q, qd, sys, g):
+    """Fill g [N, N, N m] with gravity and every applied load at time t [s]."""
+    nb = sys.mass.shape[0]
+    for b in range(nb):
+        g[3 * b] = sys.mass[b] * sys.gravity[0]
+        g[3 * b + 1] = sys.mass[b] * sys.gravity[1]
+        g[3 * b + 2] = 0.0
+    for e in range(sys.force_kind.shape[0]):
+        kind = sys.force_kind[e]
+        b1 = sys.force_body[e, 0]
+        b2 = sys.force_body[e, 1]
+        if kind == ForceKind.POINT_FORCE:
+            fx = _function_value(sys, sys.force_function[e, 0], t)
+            fy = _function_value(sys, sys.force_function[e, 1], t)
+            _apply(q, g, b1, sys.force_point[e, 0, 0], sys.force_point[e, 0, 1], fx, fy)
+        elif kind == ForceKind.TORQUE:
+            if b1 >= 0:
+                g[3 * b1 + 2] += _function_value(sys, sys.force_function[e, 0], t)
+        elif kind == ForceKind.SPRING_DAMPER:
+            k, c, l0 = sys.force_param[e, 0], sys.force_param[e, 1], sys.force_param[e, 2]
+            ux, uy, length = _spring_axis(q, sys, e)
+            rate = _spring_rate(q, qd, sys, e, ux, uy)
+            tension = k * (length - l0) + c * rate  # pulls the two points together
+            s = sys.force_point[e]
+            _apply(q, g, b1, s[0, 0], s[0, 1], tension * ux, tension * uy)
+            _apply(q, g, b2, s[1, 0], s[1, 1], -tension * ux, -tension * uy)
+        else:  # rotational spring-damper on phi_2 - phi_1
+            k, c, a0 = sys.force_param[e, 0], sys.force_param[e, 1], sys.force_param[e, 2]
+            rel = angle(q, b2) - angle(q, b1) - a0
+            rate = angular_velocity(qd, b2) - angular_velocity(qd, b1)
+            torque = k * rel + c * rate
+            if b1 >= 0:
+                g[3 * b1 + 2] += torque
+            if b2 >= 0:
+                g[3 * b2 + 2] -= torque
+
+
+@njit(cache=True)
+def potential_energy(q, sys):
+    """Gravitational and spring potential energy [J] (zero at the origin / free length)."""
+    energy = 0.0
+    for b in range(sys.mass.shape[0]):
+        energy -= sys.mass[b] * (sys.gravity[0] * q[3 * b] + sys.gravity[1] * q[3 * b + 1])
+    for e in range(sys.force_kind.shape[0]):
+        kind = sys.force_kind[e]
+        if kind == ForceKind.SPRING_DAMPER:
+            length = _spring_axis(q, sys, e)[2]
+            energy += 0.5 * sys.force_param[e, 0] * (length - sys.force_param[e, 2]) ** 2
+        elif kind == ForceKind.ROTATIONAL_SPRING_DAMPER:
+            rel = angle(q, sys.force_body[e, 1]) - angle(q, sys.force_body[e, 0])
+            energy += 0.5 * sys.force_param[e, 0] * (rel - sys.force_param[e, 2]) ** 2
+    return energy

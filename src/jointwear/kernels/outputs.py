@@ -1,0 +1,68 @@
+"""One row of the time-series output from a state.
+
+Row layout (``system.column_names`` gives the names): time; per body x, y, phi, vx, vy,
+omega, ax, ay, alpha; per driver the generalised force it applies (-lambda of its row);
+per joint the reaction force (fx, fy) on its second body; kinetic and potential energy; the
+2-norm of the position constraints.
+"""
+
+import math
+
+from numba import njit
+
+from .dynamics import rhs
+from .forces import potential_energy
+
+
+@njit(cache=True)
+def kinetic_energy(qd, sys):
+    """Kinetic energy 1/2 q'^T M q' [J]."""
+    energy = 0.0
+    for c in range(qd.shape[0]):
+        energy += 0.5 * qd[c] * qd[c] / sys.inv_mass[c]
+    return energy
+
+
+@njit(cache=True)
+def _reaction(wk, sys, jt, b, k):
+    """Component k of the force that joint jt's constraint rows apply to body b [N]."""
+    rows = 2
+    r0 = sys.joint_row[jt]
+    force = 0.0
+    for r in range(r0, r0 + rows):
+        force -= wk.cq[r, 3 * b + k] * wk.lam[r]
+    return force
+
+
+@njit(cache=True)
+def write_row(t, y, sys, wk, ydot, row):
+    """Fill one output row for state y at time t [s]. Returns False if the solve failed."""
+    ok = rhs(t, y, sys, wk, ydot)
+    n = sys.inv_mass.shape[0]
+    nb = n // 3
+    row[0] = t
+    c = 1
+    for b in range(nb):
+        for k in range(3):
+            row[c + k] = y[3 * b + k]
+            row[c + 3 + k] = y[n + 3 * b + k]
+            row[c + 6 + k] = ydot[n + 3 * b + k]
+        c += 9
+    for d in range(sys.driver_kind.shape[0]):
+        row[c] = -wk.lam[sys.driver_row[d]]
+        c += 1
+    for jt in range(sys.joint_kind.shape[0]):
+        j = sys.joint_body[jt, 1]
+        for k in range(2):
+            if j >= 0:
+                row[c + k] = _reaction(wk, sys, jt, j, k)
+            else:  # action and reaction: the force on the ground is minus that on body i
+                row[c + k] = -_reaction(wk, sys, jt, sys.joint_body[jt, 0], k)
+        c += 2
+    row[c] = kinetic_energy(y[n:], sys)
+    row[c + 1] = potential_energy(y[:n], sys)
+    violation = 0.0
+    for r in range(wk.phi.shape[0]):
+        violation += wk.phi[r] * wk.phi[r]
+    row[c + 2] = math.sqrt(violation)
+    return ok

@@ -1,0 +1,443 @@
+"""Schema of a model file (docs/model-format.md) and its loading.
+
+A validated :class:`Model` holds plain SI floats (tuples for vectors) and names; every
+user-input problem is reported as a :class:`ModelError` with one line per problem.
+"""
+
+import math
+import re
+import tomllib
+from collections.abc import Sequence
+from os import PathLike
+from pathlib import Path
+from typing import Annotated, ClassVar, Generic, Literal, TypeVar
+
+from annotated_types import Ge, Gt
+from pydantic import (
+    AfterValidator,
+    AllowInfNan,
+    BaseModel,
+    ConfigDict,
+    Discriminator,
+    Field,
+    Strict,
+    Tag,
+    ValidationError,
+    ValidationInfo,
+    field_validator,
+    model_validator,
+)
+
+from jointwear.kernels.codes import DriverKind, ForceKind, FunctionKind, JointKind, Method
+from jointwear.model_errors import (
+    SCALAR_TAG,
+    ModelError,
+    did_you_mean,
+    from_validation_error,
+    reference_problems,
+    unknown,
+)
+from jointwear.model_overrides import apply_overrides
+from jointwear.units import (
+    Acceleration2,
+    Angle,
+    AngularSpeed,
+    Damping,
+    Force,
+    Inertia,
+    Length,
+    Mass,
+    RotationalDamping,
+    RotationalStiffness,
+    Speed,
+    Stiffness,
+    Time,
+    Torque,
+    Vector2,
+    Velocity2,
+    to_si,
+)
+
+INTEGRATORS: dict[str, Method] = {"dopri5": Method.DOPRI5, "abm": Method.ABM}
+
+
+def _one_of(table: dict[str, object], what: str) -> AfterValidator:
+    def check(value: str) -> str:
+        if value not in table:
+            raise ValueError(unknown(what, value, list(table), f"known {what}s"))
+        return value
+
+    return AfterValidator(check)
+
+
+def _check_name(name: str) -> str:
+    if not re.fullmatch(r"[A-Za-z][A-Za-z0-9_]*", name):
+        raise ValueError(
+            f"{name!r} is not a valid name; use letters, digits and _, starting with a letter"
+        )
+    if name == "ground":
+        raise ValueError("'ground' is reserved; choose another name")
+    return name
+
+
+Name = Annotated[str, AfterValidator(_check_name)]
+Number = Annotated[float, Strict(), AllowInfNan(False)]
+_T = TypeVar("_T")
+_RateT = TypeVar("_RateT")
+
+
+class _Table(BaseModel):
+    """A table of the model file: immutable, unknown keys refused."""
+
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+    @model_validator(mode="before")
+    @classmethod
+    def _known_keys(cls, data: object) -> object:
+        if isinstance(data, dict):
+            extra = [key for key in data if key not in cls.model_fields]
+            if extra:
+                hint = did_you_mean(extra[0], cls.model_fields) if len(extra) == 1 else ""
+                raise ValueError(
+                    f"unknown key{'s' * (len(extra) > 1)} {', '.join(map(repr, extra))}; "
+                    f"known keys are {', '.join(cls.model_fields)}{hint}"
+                )
+        return data
+
+
+# Functions of time ------------------------------------------------------------------------
+
+
+class ConstantSpeed(_Table, Generic[_RateT, _T]):
+    """f(t) = initial + speed t; `initial` None means the value at the initial pose guess."""
+
+    type: Literal["constant_speed"] = "constant_speed"
+    speed: _RateT
+    initial: _T | None = None
+
+
+class Polynomial(_Table):
+    """f(t) = sum_k coefficients[k] t^k, SI coefficients."""
+
+    kind: ClassVar = FunctionKind.POLYNOMIAL
+    type: Literal["polynomial"] = "polynomial"
+    coefficients: Annotated[tuple[Number, ...], Field(min_length=1, max_length=8)]
+
+
+class Harmonic(_Table, Generic[_T]):
+    """f(t) = offset + amplitude sin(angular_frequency t + phase)."""
+
+    kind: ClassVar = FunctionKind.HARMONIC
+    type: Literal["harmonic"] = "harmonic"
+    offset: _T = 0.0
+    amplitude: _T
+    angular_frequency: AngularSpeed
+    phase: Angle = 0.0
+
+
+def _tag(value: object) -> object:
+    if isinstance(value, dict):
+        return value.get("type")
+    return value.type if isinstance(value, BaseModel) else SCALAR_TAG
+
+
+def _quantity_or_function(quantity: object) -> object:
+    """Build the type: a constant `quantity`, or a polynomial or harmonic table of it."""
+    return Annotated[
+        Annotated[quantity, Tag(SCALAR_TAG)]
+        | Annotated[Polynomial, Tag("polynomial")]
+        | Annotated[Harmonic[quantity], Tag("harmonic")],
+        Discriminator(_tag),
+    ]
+
+
+ForceValue = _quantity_or_function(Force)
+TorqueValue = _quantity_or_function(Torque)
+AngleFunction = Annotated[
+    ConstantSpeed[AngularSpeed, Angle] | Polynomial | Harmonic[Angle], Field(discriminator="type")
+]
+DistanceFunction = Annotated[
+    ConstantSpeed[Speed, Length] | Polynomial | Harmonic[Length], Field(discriminator="type")
+]
+
+# Ground, bodies, joints, drivers -----------------------------------------------------------
+
+
+class Ground(_Table):
+    """Fixed points of the ground [m], global coordinates."""
+
+    points: dict[Name, Vector2] = Field(default_factory=dict)
+
+
+class Body(_Table):
+    """A moving rigid body; `position`, `angle` and velocities are initial guesses."""
+
+    name: Name
+    mass: Annotated[Mass, Gt(0)]
+    inertia: Annotated[Inertia, Gt(0)]
+    position: Vector2
+    angle: Angle
+    velocity: Velocity2 = (0.0, 0.0)
+    angular_velocity: AngularSpeed = 0.0
+    points: dict[Name, Vector2] = Field(default_factory=dict)
+
+
+class _Joint(_Table):
+    name: Name
+    bodies: tuple[str, str]
+    points: tuple[str, str]
+
+
+class RevoluteJoint(_Joint):
+    """Ideal pin joining `points[0]` of `bodies[0]` and `points[1]` of `bodies[1]`."""
+
+    kind: ClassVar = JointKind.REVOLUTE
+    type: Literal["revolute"] = "revolute"
+
+
+def _nonzero(axis: tuple[float, float]) -> tuple[float, float]:
+    if math.hypot(*axis) == 0.0:
+        raise ValueError("the axis has zero length; give a direction, e.g. [1.0, 0.0]")
+    return axis
+
+
+class TranslationalJoint(_Joint):
+    """Ideal slider along `axis` (first body's frame, any non-zero length)."""
+
+    kind: ClassVar = JointKind.TRANSLATIONAL
+    type: Literal["translational"] = "translational"
+    axis: Annotated[tuple[Number, Number], AfterValidator(_nonzero)]
+
+
+class AngleDriver(_Table):
+    """Prescribes the angle of `body` relative to `relative_to` [rad]."""
+
+    kind: ClassVar = DriverKind.ANGLE
+    type: Literal["angle"] = "angle"
+    name: Name
+    body: str
+    relative_to: str = "ground"
+    function: AngleFunction
+
+
+class DistanceDriver(_Table):
+    """Prescribes the slide of translational joint `joint` [m]."""
+
+    kind: ClassVar = DriverKind.DISTANCE
+    type: Literal["distance"] = "distance"
+    name: Name
+    joint: str
+    function: DistanceFunction
+
+
+# Forces, solver, events ---------------------------------------------------------------------
+
+
+class Gravity(_Table):
+    """Uniform gravitational acceleration [m/s^2] on every body."""
+
+    type: Literal["gravity"] = "gravity"
+    name: Name | None = None
+    acceleration: Acceleration2
+
+
+class PointForce(_Table):
+    """Force [N] in global components at a named point of a body."""
+
+    kind: ClassVar = ForceKind.POINT_FORCE
+    type: Literal["point_force"] = "point_force"
+    name: Name | None = None
+    body: str
+    point: str
+    force: tuple[ForceValue, ForceValue]
+
+
+class AppliedTorque(_Table):
+    """Torque [N m] on a body, counter-clockwise positive."""
+
+    kind: ClassVar = ForceKind.TORQUE
+    type: Literal["torque"] = "torque"
+    name: Name | None = None
+    body: str
+    torque: TorqueValue
+
+
+class SpringDamper(_Table):
+    """Translational spring-damper along the line between two points."""
+
+    kind: ClassVar = ForceKind.SPRING_DAMPER
+    type: Literal["spring_damper"] = "spring_damper"
+    name: Name | None = None
+    bodies: tuple[str, str]
+    points: tuple[str, str]
+    stiffness: Annotated[Stiffness, Ge(0)]
+    damping: Annotated[Damping, Ge(0)] = 0.0
+    free_length: Annotated[Length, Ge(0)]
+
+
+class RotationalSpringDamper(_Table):
+    """Rotational spring-damper on the relative angle phi_2 - phi_1."""
+
+    kind: ClassVar = ForceKind.ROTATIONAL_SPRING_DAMPER
+    type: Literal["rotational_spring_damper"] = "rotational_spring_damper"
+    name: Name | None = None
+    bodies: tuple[str, str]
+    stiffness: Annotated[RotationalStiffness, Ge(0)]
+    damping: Annotated[RotationalDamping, Ge(0)] = 0.0
+    free_angle: Angle = 0.0
+
+
+Joint = Annotated[RevoluteJoint | TranslationalJoint, Field(discriminator="type")]
+Driver = Annotated[AngleDriver | DistanceDriver, Field(discriminator="type")]
+Load = Annotated[
+    Gravity | PointForce | AppliedTorque | SpringDamper | RotationalSpringDamper,
+    Field(discriminator="type"),
+]
+PositiveTime = Annotated[Time, Gt(0)]
+
+
+class Solver(_Table):
+    """Integration and output settings; times in [s], rates in [1/s]."""
+
+    integrator: Annotated[str, _one_of(INTEGRATORS, "integrator")] = "dopri5"
+    rtol: Annotated[Number, Gt(0)] = 1e-6
+    atol: Annotated[Number, Gt(0)] = 1e-8
+    min_step: PositiveTime = 1e-12
+    max_step: PositiveTime = 1e-3
+    initial_step: PositiveTime = 1e-6
+    baumgarte_alpha: Annotated[Number, Ge(0)] = 5.0
+    baumgarte_beta: Annotated[Number, Ge(0)] = 5.0
+    output_interval: PositiveTime = 1e-4
+    t_end: PositiveTime = 1.0
+    max_steps: Annotated[int, Strict(), Gt(0)] = 10_000_000
+    assembly_tolerance: Annotated[Length, Gt(0)] = 1e-10
+
+    @model_validator(mode="after")
+    def _steps_in_order(self) -> "Solver":
+        if not self.min_step <= self.initial_step <= self.max_step:
+            raise ValueError(
+                f"min_step {self.min_step:g}, initial_step {self.initial_step:g}, max_step "
+                f"{self.max_step:g} [s] are out of order; need min_step <= initial_step <= max_step"
+            )
+        return self
+
+    @property
+    def method(self) -> Method:
+        """Integrator code for the kernels."""
+        return INTEGRATORS[self.integrator]
+
+
+class Event(_Table):
+    """Crossing of a body's x or y [m] or phi [rad] through `value`."""
+
+    name: Name
+    body: str
+    coordinate: Literal["x", "y", "phi"]
+    value: float
+    direction: Literal["rising", "falling", "any"] = "any"
+
+    @field_validator("value", mode="before")
+    @classmethod
+    def _value_units(cls, value: object, info: ValidationInfo) -> float:
+        if "coordinate" not in info.data:
+            return 0.0  # the coordinate is invalid and reported; its value cannot be judged
+        return to_si(value, "[]" if info.data["coordinate"] == "phi" else "[length]")
+
+
+# The model ---------------------------------------------------------------------------------
+
+
+class Model(_Table):
+    """A whole model file, validated, in SI units."""
+
+    name: Annotated[str, Field(min_length=1)]
+    description: str = ""
+    ground: Ground = Field(default_factory=Ground)
+    bodies: Annotated[tuple[Body, ...], Field(min_length=1)]
+    joints: tuple[Joint, ...] = ()
+    drivers: tuple[Driver, ...] = ()
+    forces: tuple[Load, ...] = ()
+    solver: Solver = Field(default_factory=Solver)
+    events: tuple[Event, ...] = ()
+
+    @model_validator(mode="after")
+    def _check_references(self) -> "Model":
+        problems = reference_problems(self)
+        if problems:
+            raise ModelError(problems)
+        return self
+
+    @property
+    def body_names(self) -> tuple[str, ...]:
+        """Names of the moving bodies, in file order."""
+        return tuple(body.name for body in self.bodies)
+
+    def body(self, name: str) -> Body:
+        """Return the moving body called `name` (KeyError if there is none)."""
+        return _named(self.bodies, name)
+
+    def joint(self, name: str) -> RevoluteJoint | TranslationalJoint:
+        """Return the joint called `name` (KeyError if there is none)."""
+        return _named(self.joints, name)
+
+    def point(self, body: str, name: str) -> tuple[float, float]:
+        """Return point `name` of `body` [m]: global for ``"ground"``, else in the body frame."""
+        points = self.ground.points if body == "ground" else self.body(body).points
+        return points[name]
+
+
+def _named(items: Sequence, name: str):
+    for item in items:
+        if item.name == name:
+            return item
+    raise KeyError(name)
+
+
+# Loading ----------------------------------------------------------------------------------
+
+
+def parse_model(data: dict, name: str = "model") -> Model:
+    """Validate a model given as a dict (a parsed TOML file or a saved model.json).
+
+    Parameters
+    ----------
+    data
+        The model's tables, values as in the model file.
+    name
+        Model name used when `data` has no ``name``.
+
+    Raises
+    ------
+    ModelError
+        With one line per problem found.
+    """
+    if isinstance(data, dict):
+        data = {"name": name, **data}
+    try:
+        return Model.model_validate(data)
+    except ValidationError as error:
+        raise from_validation_error(error, data) from None
+
+
+def load_model(path: str | PathLike, overrides: Sequence[str] = ()) -> Model:
+    """Read a TOML model file, apply dotted ``path=value`` overrides, and validate it.
+
+    The model name defaults to the file name without its suffix.
+
+    Raises
+    ------
+    ModelError
+        If the file cannot be read, is not valid TOML, or describes an invalid model.
+    """
+    path = Path(path)
+    try:
+        data = tomllib.loads(path.read_bytes().decode())
+    except OSError as error:
+        raise ModelError([f"{path}: cannot read the file; {error.strerror}"]) from None
+    except UnicodeDecodeError:
+        raise ModelError([f"{path}: not UTF-8 text; a model file is TOML"]) from None
+    except tomllib.TOMLDecodeError as error:
+        where = re.fullmatch(r"(.*) \(at line (\d+), column (\d+)\)", str(error))
+        place, what = (f"{path}:{where[2]}:{where[3]}", where[1]) if where else (path, error)
+        raise ModelError([f"{place}: invalid TOML: {what}; fix the syntax there"]) from None
+    return parse_model(apply_overrides(data, overrides), name=path.stem)

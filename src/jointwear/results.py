@@ -1,0 +1,88 @@
+"""Results of a run, and their folder on disk.
+
+A results folder holds ``summary.json`` (status, settings, version, run statistics),
+``timeseries.csv`` and ``timeseries.parquet`` (the same table), ``events.csv`` and
+``model.json`` (the resolved model, SI), so that it describes itself; ``load_results`` reads
+it back.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import tempfile
+from dataclasses import dataclass
+from pathlib import Path
+
+import pandas as pd
+
+from .kernels.codes import Status
+from .model import Model, parse_model
+
+_MESSAGES = {
+    Status.RUNNING: "stopped between chunks",
+    Status.SUCCESS: "reached the end time",
+    Status.STEP_UNDERFLOW: "the step size fell below the minimum; try a smaller "
+    "solver.min_step or looser tolerances",
+    Status.NON_FINITE: "the state became non-finite (NaN or inf) at the minimum step; check "
+    "forces and stiffness, or try tighter tolerances or a smaller solver.max_step",
+    Status.SINGULAR: "the constraint Jacobian became singular (a dead-centre or lock-up "
+    "position); check the geometry and the drivers",
+    Status.MAX_STEPS: "solver.max_steps was reached; raise it or loosen the tolerances",
+    Status.INTERRUPTED: "interrupted by the user; the results hold what was computed so far",
+}
+
+
+def status_message(status: Status) -> str:
+    """What a run status means, and what to try."""
+    return _MESSAGES[status]
+
+
+@dataclass(frozen=True)
+class Results:
+    """Outcome of ``simulate``: time series, event log and summary of one model."""
+
+    model: Model
+    timeseries: pd.DataFrame
+    events: pd.DataFrame
+    summary: dict
+
+    @property
+    def status(self) -> str:
+        """``success``, ``interrupted``, ``singular``, ... (see ``Status``)."""
+        return self.summary["status"]
+
+    @property
+    def message(self) -> str:
+        """Human-readable explanation of the status."""
+        return self.summary["message"]
+
+    def save(self, folder: str | os.PathLike) -> Path:
+        """Write the results folder (created if needed); return its path."""
+        path = Path(folder)
+        path.mkdir(parents=True, exist_ok=True)
+        _write_text(path / "summary.json", json.dumps(self.summary, indent=2))
+        _write_text(path / "model.json", self.model.model_dump_json(indent=2))
+        self.timeseries.to_csv(path / "timeseries.csv", index=False, float_format="%.12g")
+        self.timeseries.to_parquet(path / "timeseries.parquet", index=False)
+        self.events.to_csv(path / "events.csv", index=False, float_format="%.12g")
+        return path
+
+
+def _write_text(path: Path, text: str) -> None:
+    """Write atomically: a reader never sees half a file."""
+    with tempfile.NamedTemporaryFile("w", dir=path.parent, delete=False, suffix=".tmp") as f:
+        f.write(text)
+    os.replace(f.name, path)
+
+
+def load_results(folder: str | os.PathLike) -> Results:
+    """Read a results folder written by ``Results.save``."""
+    path = Path(folder)
+    model_data = json.loads((path / "model.json").read_text())
+    return Results(
+        model=parse_model(model_data),
+        timeseries=pd.read_parquet(path / "timeseries.parquet"),
+        events=pd.read_csv(path / "events.csv"),
+        summary=json.loads((path / "summary.json").read_text()),
+    )

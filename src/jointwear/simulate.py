@@ -1,0 +1,162 @@
+"""Run a model: assemble, then integrate chunk by chunk in the compiled loop.
+
+Between chunks (about ``CHUNK_WALL_S`` of wall time each) the rows computed so far are kept,
+the progress callback is called, and Ctrl-C or SIGTERM end the run cleanly: the ``Results``
+then hold everything computed up to that point, with status ``interrupted``.
+"""
+
+from __future__ import annotations
+
+import math
+import signal
+import threading
+import time
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
+
+import numpy as np
+import pandas as pd
+
+from . import __version__
+from .assembly import assemble
+from .kernels import loop
+from .kernels.abm import make_abm_state
+from .kernels.codes import N_COUNTERS, Counter, Status
+from .kernels.dopri5 import make_dopri5_state
+from .model import INTEGRATORS, Model
+from .results import Results, status_message
+from .system import build_system, column_names, make_work
+
+CHUNK_WALL_S = 0.2  # target wall time of one compiled chunk [s]
+EVENT_CAPACITY = 4096  # crossings one chunk may log before it hands back
+Progress = Callable[[float, float], None]  # (simulated time reached, end time) [s]
+
+
+def _output_times(t_end: float, interval: float) -> np.ndarray:
+    count = math.floor(t_end / interval * (1.0 + 1e-12)) + 1
+    times = np.arange(count) * interval
+    if t_end - times[-1] > 1e-9 * interval:
+        times = np.append(times, t_end)
+    return times
+
+
+@contextmanager
+def _stop_requests() -> Iterator[list[bool]]:
+    """Turn SIGINT and SIGTERM into a flag checked between chunks (main thread only)."""
+    flag = [False]
+    if threading.current_thread() is not threading.main_thread():
+        yield flag
+        return
+
+    def request_stop(signum: int, frame: object) -> None:
+        flag[0] = True
+
+    previous = {s: signal.signal(s, request_stop) for s in (signal.SIGINT, signal.SIGTERM)}
+    try:
+        yield flag
+    finally:
+        for s, handler in previous.items():
+            signal.signal(s, handler)
+
+
+def simulate(model: Model, *, progress: Progress | None = None) -> Results:
+    """Simulate ``model`` from its assembled initial pose to ``model.solver.t_end``.
+
+    Parameters
+    ----------
+    model
+        A validated model (``load_model``).
+    progress
+        Called after every chunk with the time reached and the end time [s].
+
+    Returns
+    -------
+    Results
+        Time series, events and summary; partial, with a non-success status, if the run
+        failed or was interrupted.
+    """
+    solver = model.solver
+    system = build_system(model)
+    assembly = assemble(model, system)
+    n_state = assembly.y0.shape[0]
+    output_times = _output_times(solver.t_end, solver.output_interval)
+    ctl = loop.Control(
+        method=int(INTEGRATORS[solver.integrator]),
+        rtol=solver.rtol,
+        atol=solver.atol,
+        min_step=solver.min_step,
+        max_step=solver.max_step,
+        t_end=solver.t_end,
+        max_steps=solver.max_steps,
+        output_times=output_times,
+        rows_per_step=math.ceil(solver.max_step / solver.output_interval) + 2,
+    )
+    n_events = len(model.events)
+    ls = loop.LoopState(
+        counters=np.zeros(N_COUNTERS, dtype=np.int64),
+        max_violation=np.zeros(1),
+        **{name: np.zeros(n_state) for name in loop.LoopState._fields[2:8]},
+        event_prev=np.zeros(n_events),
+        event_time=np.zeros(EVENT_CAPACITY),
+        event_index=np.zeros(EVENT_CAPACITY, dtype=np.int64),
+        event_rising=np.zeros(EVENT_CAPACITY, dtype=np.int64),
+    )
+    dp, ab, wk = make_dopri5_state(n_state), make_abm_state(n_state), make_work(system)
+    columns = column_names(model)
+    buffer = np.zeros((max(ctl.rows_per_step * 4, 1024), len(columns)))
+    blocks: list[np.ndarray] = []
+    events: list[tuple[float, str, str]] = []
+
+    wall_start = time.perf_counter()
+    status = Status.RUNNING
+    if not loop.start(system, ctl, ls, dp, ab, wk, 0.0, assembly.y0, solver.initial_step):
+        status = Status.SINGULAR
+    chunk = min(solver.t_end, 100 * solver.max_step)
+    with _stop_requests() as stop_requested:
+        while status == Status.RUNNING:
+            t_before = loop.current_time(ctl, dp, ab)
+            chunk_start = time.perf_counter()
+            code, rows = loop.advance(system, ctl, ls, dp, ab, wk, buffer, t_before + chunk)
+            status = Status(code)
+            blocks.append(buffer[:rows].copy())
+            for i in range(ls.counters[Counter.EVENTS]):
+                direction = "rising" if ls.event_rising[i] else "falling"
+                events.append((ls.event_time[i], model.events[ls.event_index[i]].name, direction))
+            ls.counters[Counter.EVENTS] = 0
+            t_now = loop.current_time(ctl, dp, ab)
+            if progress is not None:
+                progress(t_now, solver.t_end)
+            if stop_requested[0] and status == Status.RUNNING:
+                status = Status.INTERRUPTED
+            elapsed = time.perf_counter() - chunk_start
+            if t_now > t_before and elapsed > 0:  # aim the next chunk at CHUNK_WALL_S
+                rate = (t_now - t_before) / elapsed
+                chunk = min(max(rate * CHUNK_WALL_S, solver.max_step), 10 * chunk)
+    wall = time.perf_counter() - wall_start
+
+    data = np.concatenate(blocks) if blocks else np.zeros((0, len(columns)))
+    stats = {
+        "simulation_wall_s": wall,
+        "t_reached": float(loop.current_time(ctl, dp, ab)),
+        "accepted_steps": int(ls.counters[Counter.ACCEPTED]),
+        "rejected_steps": int(ls.counters[Counter.REJECTED]),
+        "rhs_evaluations": int(ls.counters[Counter.RHS_EVALS]),
+        "min_step_hits": int(ls.counters[Counter.MIN_STEP_HITS]),
+        "max_constraint_violation": float(ls.max_violation[0]),
+        "assembly_iterations": assembly.iterations,
+        "degrees_of_freedom": assembly.dof,
+    }
+    summary = {
+        "jointwear_version": __version__,
+        "model": model.name,
+        "status": status.name.lower(),
+        "message": status_message(status),
+        "settings": model.solver.model_dump(mode="json"),
+        "stats": stats,
+    }
+    return Results(
+        model=model,
+        timeseries=pd.DataFrame(data, columns=columns),
+        events=pd.DataFrame(events, columns=["time", "event", "direction"]),
+        summary=summary,
+    )

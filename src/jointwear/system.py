@@ -1,0 +1,265 @@
+"""From a validated ``Model`` to the arrays the kernels run on.
+
+``build_system`` turns names into indices and tables: the kernels never see a name or a unit.
+The ``System`` is immutable for a run; ``Work`` holds the scratch arrays of one right-hand
+side evaluation.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+from numpy.typing import NDArray
+
+from .kernels.codes import DriverKind, EventDirection, ForceKind, FunctionKind, JointKind
+from .model import Model
+
+GROUND = -1
+MAX_COEFFICIENTS = 8
+BODY_COLUMNS = ("x", "y", "phi", "vx", "vy", "omega", "ax", "ay", "alpha")
+
+
+class System(NamedTuple):
+    """A mechanism as arrays (SI units). Body index -1 is the ground."""
+
+    mass: NDArray[np.float64]  # (nb,) [kg]
+    inv_mass: NDArray[np.float64]  # (3 nb,) diagonal of M^-1 [1/kg, 1/(kg m^2)]
+    gravity: NDArray[np.float64]  # (2,) [m/s^2]
+    joint_kind: NDArray[np.int64]  # (nj,) JointKind
+    joint_body: NDArray[np.int64]  # (nj, 2)
+    joint_point: NDArray[np.float64]  # (nj, 2, 2) local points [m]
+    joint_axis: NDArray[np.float64]  # (nj, 2) unit axis in the first body's frame
+    joint_angle0: NDArray[np.float64]  # (nj,) relative angle held by translational joints [rad]
+    joint_row: NDArray[np.int64]  # (nj,) first constraint row
+    driver_kind: NDArray[np.int64]  # (nd,) DriverKind
+    driver_body: NDArray[np.int64]  # (nd, 2) angle drivers: (relative_to, body)
+    driver_joint: NDArray[np.int64]  # (nd,) distance drivers: translational joint index
+    driver_function: NDArray[np.int64]  # (nd,) row of the function table
+    driver_row: NDArray[np.int64]  # (nd,) constraint row
+    function_kind: NDArray[np.int64]  # (nf,) FunctionKind
+    function_param: NDArray[np.float64]  # (nf, 8)
+    force_kind: NDArray[np.int64]  # (nl,) ForceKind
+    force_body: NDArray[np.int64]  # (nl, 2)
+    force_point: NDArray[np.float64]  # (nl, 2, 2) [m]
+    force_function: NDArray[np.int64]  # (nl, 2) function rows of (fx, fy) or (torque, -)
+    force_param: NDArray[np.float64]  # (nl, 3) stiffness, damping, free length or angle
+    event_body: NDArray[np.int64]  # (ne,)
+    event_coordinate: NDArray[np.int64]  # (ne,) 0 x, 1 y, 2 phi
+    event_value: NDArray[np.float64]  # (ne,)
+    event_direction: NDArray[np.int64]  # (ne,) EventDirection
+    baumgarte_alpha: float  # [1/s]
+    baumgarte_beta: float  # [1/s]
+
+
+class Work(NamedTuple):
+    """Scratch arrays of one right-hand-side evaluation (m constraint rows, n coordinates)."""
+
+    g: NDArray[np.float64]  # (n,) generalised applied forces
+    phi: NDArray[np.float64]  # (m,)
+    cq: NDArray[np.float64]  # (m, n)
+    gamma: NDArray[np.float64]  # (m,)
+    phi_t: NDArray[np.float64]  # (m,)
+    b: NDArray[np.float64]  # (m,) right side of the Schur system
+    schur: NDArray[np.float64]  # (m, m)
+    lam: NDArray[np.float64]  # (m,) Lagrange multipliers
+
+
+def make_work(system: System) -> Work:
+    """Allocate the scratch arrays for ``system``."""
+    n = system.inv_mass.shape[0]
+    m = constraint_count(system)
+    return Work(
+        g=np.zeros(n),
+        phi=np.zeros(m),
+        cq=np.zeros((m, n)),
+        gamma=np.zeros(m),
+        phi_t=np.zeros(m),
+        b=np.zeros(m),
+        schur=np.zeros((m, m)),
+        lam=np.zeros(m),
+    )
+
+
+def constraint_count(system: System) -> int:
+    """Number of constraint equations (2 per joint, 1 per driver)."""
+    return 2 * system.joint_kind.shape[0] + system.driver_kind.shape[0]
+
+
+def column_names(model: Model) -> list[str]:
+    """Names of the time-series columns, in the order ``kernels.outputs.write_row`` fills."""
+    names = ["time"]
+    for body in model.bodies:
+        names += [f"{c}_{body.name}" for c in BODY_COLUMNS]
+    for driver in model.drivers:
+        names.append(f"{'torque' if driver.type == 'angle' else 'force'}_{driver.name}")
+    for joint in model.joints:
+        names += [f"{joint.name}_fx", f"{joint.name}_fy"]
+    return [*names, "energy_kinetic", "energy_potential", "constraint_violation"]
+
+
+class _Functions:
+    """Collects functions of time into the (kind, parameters) table."""
+
+    def __init__(self) -> None:
+        self.kind: list[int] = []
+        self.param: list[NDArray[np.float64]] = []
+
+    def add(self, kind: FunctionKind, values: list[float]) -> int:
+        row = np.zeros(MAX_COEFFICIENTS)
+        row[: len(values)] = values
+        self.kind.append(int(kind))
+        self.param.append(row)
+        return len(self.kind) - 1
+
+    def add_spec(self, spec: object, initial: float = 0.0) -> int:
+        """Add a constant, constant_speed, polynomial or harmonic specification."""
+        if isinstance(spec, int | float):
+            return self.add(FunctionKind.POLYNOMIAL, [float(spec)])
+        if spec.type == "constant_speed":
+            start = initial if spec.initial is None else spec.initial
+            return self.add(FunctionKind.POLYNOMIAL, [start, spec.speed])
+        if spec.type == "polynomial":
+            return self.add(FunctionKind.POLYNOMIAL, list(spec.coefficients))
+        return self.add(
+            FunctionKind.HARMONIC,
+            [spec.offset, spec.amplitude, spec.angular_frequency, spec.phase],
+        )
+
+
+def _table(rows: list, shape: tuple[int, ...], dtype: type) -> NDArray:
+    return np.array(rows, dtype=dtype).reshape((len(rows), *shape))
+
+
+def build_system(model: Model) -> System:
+    """Build the kernel arrays of ``model`` (validated, SI)."""
+    index = {b.name: i for i, b in enumerate(model.bodies)}
+    index["ground"] = GROUND
+    points = {b.name: dict(b.points) for b in model.bodies}
+    points["ground"] = dict(model.ground.points)
+    pose = {b.name: (b.position[0], b.position[1], b.angle) for b in model.bodies}
+    pose["ground"] = (0.0, 0.0, 0.0)
+
+    def local(body: str, point: str) -> tuple[float, float]:
+        return points[body][point]
+
+    def global_point(body: str, point: str) -> NDArray[np.float64]:
+        x, y, phi = pose[body]
+        c, s = np.cos(phi), np.sin(phi)
+        px, py = local(body, point)
+        if body == "ground":
+            return np.array([px, py])
+        return np.array([x + c * px - s * py, y + s * px + c * py])
+
+    functions = _Functions()
+    joints = {"kind": [], "body": [], "point": [], "axis": [], "angle0": [], "row": []}
+    row = 0
+    for joint in model.joints:
+        b1, b2 = joint.bodies
+        joints["kind"].append(int(JointKind[joint.type.upper()]))
+        joints["body"].append([index[b1], index[b2]])
+        joints["point"].append([local(b1, joint.points[0]), local(b2, joint.points[1])])
+        axis = np.array(getattr(joint, "axis", (1.0, 0.0)), dtype=float)
+        joints["axis"].append(axis / np.linalg.norm(axis))
+        joints["angle0"].append(pose[b2][2] - pose[b1][2])
+        joints["row"].append(row)
+        row += 2
+    joint_index = {j.name: i for i, j in enumerate(model.joints)}
+
+    drivers = {"kind": [], "body": [], "joint": [], "function": [], "row": []}
+    for driver in model.drivers:
+        if driver.type == "angle":
+            i, j = driver.relative_to, driver.body
+            initial = pose[j][2] - pose[i][2]
+            drivers["kind"].append(int(DriverKind.ANGLE))
+            drivers["body"].append([index[i], index[j]])
+            drivers["joint"].append(-1)
+        else:
+            joint = model.joints[joint_index[driver.joint]]
+            b1, b2 = joint.bodies
+            axis = np.array(joint.axis, dtype=float)
+            c, s = np.cos(pose[b1][2]), np.sin(pose[b1][2])
+            axis_global = np.array([c * axis[0] - s * axis[1], s * axis[0] + c * axis[1]])
+            slide = global_point(b2, joint.points[1]) - global_point(b1, joint.points[0])
+            initial = float(slide @ axis_global / np.linalg.norm(axis))
+            drivers["kind"].append(int(DriverKind.DISTANCE))
+            drivers["body"].append([GROUND, GROUND])
+            drivers["joint"].append(joint_index[driver.joint])
+        drivers["function"].append(functions.add_spec(driver.function, initial))
+        drivers["row"].append(row)
+        row += 1
+
+    gravity = np.zeros(2)
+    loads = {"kind": [], "body": [], "point": [], "function": [], "param": []}
+    for force in model.forces:
+        if force.type == "gravity":
+            gravity += np.asarray(force.acceleration, dtype=float)
+            continue
+        body_pair, point_pair = [GROUND, GROUND], [(0.0, 0.0), (0.0, 0.0)]
+        funcs, param = [-1, -1], [0.0, 0.0, 0.0]
+        if force.type == "point_force":
+            body_pair[0] = index[force.body]
+            point_pair[0] = local(force.body, force.point)
+            funcs = [functions.add_spec(force.force[0]), functions.add_spec(force.force[1])]
+        elif force.type == "torque":
+            body_pair[0] = index[force.body]
+            funcs[0] = functions.add_spec(force.torque)
+        elif force.type == "spring_damper":
+            body_pair = [index[b] for b in force.bodies]
+            point_pair = [local(b, p) for b, p in zip(force.bodies, force.points, strict=True)]
+            param = [force.stiffness, force.damping, force.free_length]
+        else:
+            body_pair = [index[b] for b in force.bodies]
+            param = [force.stiffness, force.damping, force.free_angle]
+        loads["kind"].append(int(ForceKind[force.type.upper()]))
+        loads["body"].append(body_pair)
+        loads["point"].append(point_pair)
+        loads["function"].append(funcs)
+        loads["param"].append(param)
+
+    coordinate = {"x": 0, "y": 1, "phi": 2}
+    events = model.events
+    mass = np.array([b.mass for b in model.bodies], dtype=float)
+    inertia = np.array([b.inertia for b in model.bodies], dtype=float)
+    return System(
+        mass=mass,
+        inv_mass=1.0 / np.column_stack([mass, mass, inertia]).ravel(),
+        gravity=gravity,
+        joint_kind=_table(joints["kind"], (), np.int64),
+        joint_body=_table(joints["body"], (2,), np.int64),
+        joint_point=_table(joints["point"], (2, 2), np.float64),
+        joint_axis=_table(joints["axis"], (2,), np.float64),
+        joint_angle0=_table(joints["angle0"], (), np.float64),
+        joint_row=_table(joints["row"], (), np.int64),
+        driver_kind=_table(drivers["kind"], (), np.int64),
+        driver_body=_table(drivers["body"], (2,), np.int64),
+        driver_joint=_table(drivers["joint"], (), np.int64),
+        driver_function=_table(drivers["function"], (), np.int64),
+        driver_row=_table(drivers["row"], (), np.int64),
+        function_kind=_table(functions.kind, (), np.int64),
+        function_param=_table(functions.param, (MAX_COEFFICIENTS,), np.float64),
+        force_kind=_table(loads["kind"], (), np.int64),
+        force_body=_table(loads["body"], (2,), np.int64),
+        force_point=_table(loads["point"], (2, 2), np.float64),
+        force_function=_table(loads["function"], (2,), np.int64),
+        force_param=_table(loads["param"], (3,), np.float64),
+        event_body=_table([index[e.body] for e in events], (), np.int64),
+        event_coordinate=_table([coordinate[e.coordinate] for e in events], (), np.int64),
+        event_value=_table([e.value for e in events], (), np.float64),
+        event_direction=_table(
+            [int(EventDirection[e.direction.upper()]) for e in events], (), np.int64
+        ),
+        baumgarte_alpha=float(model.solver.baumgarte_alpha),
+        baumgarte_beta=float(model.solver.baumgarte_beta),
+    )
+
+
+def initial_guess(model: Model) -> NDArray[np.float64]:
+    """State guess (q, q') from the bodies' initial poses and velocities."""
+    q = [v for b in model.bodies for v in (b.position[0], b.position[1], b.angle)]
+    qd = [
+        v
+        for b in model.bodies
+        for v in (b.velocity[0], b.velocity[1], b.angular_velocity)
+    ]
+    return np.array(q + qd, dtype=float)

@@ -1,0 +1,151 @@
+"""Physical quantities in model files: plain SI numbers or strings with units.
+
+A value is either a plain number, taken as SI (m, kg, s, rad, N, N m, Pa), or a string made
+of a number and a unit that pint knows (``"9.8 mm"``, ``"207 GPa"``, ``"1500 rpm"``,
+``"90 deg"``). The unit must match what the field means. Strings are read with a small
+grammar (a number, then unit names joined by ``*``, ``/``, spaces and integer powers), so
+nothing in them is evaluated as an expression.
+
+The ``Annotated`` types at the end (``Length``, ``Mass``, ...) apply :func:`to_si` when a
+pydantic model is validated, so a validated model holds plain SI floats.
+"""
+
+import math
+import re
+from typing import Annotated, NamedTuple
+
+import pint
+from pydantic import BeforeValidator
+
+ureg = pint.UnitRegistry()
+
+
+class _Kind(NamedTuple):
+    noun: str
+    example: str
+
+
+# Keys are pint dimension expressions. Rotational stiffness has the dimension of a torque, so
+# its key spells that dimension differently to get its own name and example.
+_KINDS: dict[str, _Kind] = {
+    "[]": _Kind("angle", "90 deg"),
+    "[length]": _Kind("length", "9.8 mm"),
+    "[mass]": _Kind("mass", "3.12 kg"),
+    "[mass] * [length] ** 2": _Kind("moment of inertia", "0.042 kg*m^2"),
+    "[time]": _Kind("time", "0.5 ms"),
+    "1/[time]": _Kind("angular speed", "1500 rpm"),
+    "[length] / [time]": _Kind("speed", "0.3 m/s"),
+    "[length] / [time] ** 2": _Kind("acceleration", "9.81 m/s^2"),
+    "[force]": _Kind("force", "100 N"),
+    "[force] * [length]": _Kind("torque", "5 N*m"),
+    "[length] * [force]": _Kind("rotational stiffness", "10 N*m/rad"),
+    "[force] / [length]": _Kind("stiffness", "1000 N/m"),
+    "[force] * [time] / [length]": _Kind("damping coefficient", "5 N*s/m"),
+    "[force] * [length] * [time]": _Kind("rotational damping coefficient", "0.1 N*m*s/rad"),
+    "[pressure]": _Kind("pressure", "207 GPa"),
+}
+_NOUNS = {ureg.get_dimensionality(key): kind.noun for key, kind in reversed(_KINDS.items())}
+
+_NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
+_UNIT = r"[^\W\d]\w*(?:\s*(?:\^|\*\*)\s*-?\d+)?"
+_QUANTITY = re.compile(rf"\s*({_NUMBER})\s*({_UNIT}(?:\s*[*/ ]\s*{_UNIT})*)?\s*")
+
+
+def _article(noun: str) -> str:
+    return f"an {noun}" if noun[0] in "aeiou" else f"a {noun}"
+
+
+def _describe(dimensionality: pint.util.UnitsContainer) -> str:
+    return _NOUNS.get(dimensionality, str(dimensionality))
+
+
+def to_si(value: object, dimension: str, field_name: str | None = None) -> float:
+    """Convert a plain SI number or a string with units to an SI float.
+
+    Parameters
+    ----------
+    value
+        A number (already SI; radians for angles) or a string such as ``"9.8 mm"``.
+    dimension
+        The expected pint dimension, e.g. ``"[length]"``, ``"[mass] * [length] ** 2"``,
+        ``"1/[time]"`` for angular speeds or ``"[]"`` for angles.
+    field_name
+        Prefixed to the error message when given.
+
+    Returns
+    -------
+    float
+        The value in SI units [m, kg, s, rad, N, Pa and their products].
+
+    Raises
+    ------
+    ValueError
+        If the value is not a finite number or a readable string with units of `dimension`.
+    """
+    kind = _KINDS.get(dimension, _Kind(f"quantity of dimension {dimension}", "1 m"))
+    expected = f"expected {_article(kind.noun)}, e.g. '{kind.example}'"
+    try:
+        return _to_si(value, dimension, expected)
+    except ValueError as error:
+        if field_name is None:
+            raise
+        raise ValueError(f"{field_name}: {error}") from None
+
+
+def _to_si(value: object, dimension: str, expected: str) -> float:
+    if isinstance(value, bool) or not isinstance(value, int | float | str):
+        raise ValueError(f"{value!r} is not a number; {expected} (plain numbers are SI)")
+    if not isinstance(value, str):
+        if not math.isfinite(value):
+            raise ValueError(f"{value!r} is not a finite number; {expected}")
+        return float(value)
+    match = _QUANTITY.fullmatch(value)
+    if match is None:
+        raise ValueError(f"cannot read {value!r} as a number and a unit; {expected}")
+    number, units = match.groups()
+    if units is None:
+        raise ValueError(f"{value!r} has no unit; {expected} (plain numbers are SI)")
+    try:
+        quantity = ureg.Quantity(float(number), ureg.parse_units(units))
+    except pint.PintError as error:
+        raise ValueError(f"cannot read {value!r}: {error}; {expected}") from None
+    if quantity.dimensionality != ureg.get_dimensionality(dimension):
+        actual = _describe(quantity.dimensionality)
+        raise ValueError(f"{value!r} has units of {actual}; {expected}")
+    if dimension == "1/[time]" and any(name.endswith("hertz") for name, _ in quantity.unit_items()):
+        raise ValueError(
+            f"{value!r} is ambiguous for an angular speed (cycles or radians per second?); "
+            "use rad/s or rpm, e.g. '1500 rpm'"
+        )
+    result = float(quantity.to_base_units().magnitude)
+    if not math.isfinite(result):
+        raise ValueError(f"{value!r} is not finite in SI units; {expected}")
+    return result
+
+
+def _quantity(dimension: str) -> BeforeValidator:
+    def convert(value: object) -> float:
+        return to_si(value, dimension)
+
+    return BeforeValidator(convert)
+
+
+Length = Annotated[float, _quantity("[length]")]
+Mass = Annotated[float, _quantity("[mass]")]
+Inertia = Annotated[float, _quantity("[mass] * [length] ** 2")]
+Angle = Annotated[float, _quantity("[]")]
+Time = Annotated[float, _quantity("[time]")]
+AngularSpeed = Annotated[float, _quantity("1/[time]")]
+Speed = Annotated[float, _quantity("[length] / [time]")]
+Acceleration = Annotated[float, _quantity("[length] / [time] ** 2")]
+Force = Annotated[float, _quantity("[force]")]
+Torque = Annotated[float, _quantity("[force] * [length]")]
+Stiffness = Annotated[float, _quantity("[force] / [length]")]
+Damping = Annotated[float, _quantity("[force] * [time] / [length]")]
+RotationalStiffness = Annotated[float, _quantity("[length] * [force]")]
+RotationalDamping = Annotated[float, _quantity("[force] * [length] * [time]")]
+Pressure = Annotated[float, _quantity("[pressure]")]
+
+Vector2 = tuple[Length, Length]
+Velocity2 = tuple[Speed, Speed]
+Acceleration2 = tuple[Acceleration, Acceleration]
