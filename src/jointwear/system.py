@@ -12,7 +12,7 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import NDArray
 
-from .kernels.codes import DriverKind, EventDirection, ForceKind, FunctionKind, JointKind
+from .kernels.codes import DriverKind, EventDirection, FunctionKind
 from .model import Model
 
 GROUND = -1
@@ -156,7 +156,7 @@ def build_system(model: Model) -> System:
     row = 0
     for joint in model.joints:
         b1, b2 = joint.bodies
-        joints["kind"].append(int(JointKind[joint.type.upper()]))
+        joints["kind"].append(int(joint.kind))
         joints["body"].append([index[b1], index[b2]])
         joints["point"].append([local(b1, joint.points[0]), local(b2, joint.points[1])])
         axis = np.array(getattr(joint, "axis", (1.0, 0.0)), dtype=float)
@@ -211,7 +211,7 @@ def build_system(model: Model) -> System:
         else:
             body_pair = [index[b] for b in force.bodies]
             param = [force.stiffness, force.damping, force.free_angle]
-        loads["kind"].append(int(ForceKind[force.type.upper()]))
+        loads["kind"].append(int(force.kind))
         loads["body"].append(body_pair)
         loads["point"].append(point_pair)
         loads["function"].append(funcs)
