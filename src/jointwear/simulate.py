@@ -28,6 +28,7 @@ from .results import Results, status_message
 from .system import build_system, column_names, make_work
 
 CHUNK_WALL_S = 0.2  # target wall time of one compiled chunk [s]
+MIN_CHUNK_STEPS = 100  # the first chunk spans this many maximum steps
 EVENT_CAPACITY = 4096  # crossings one chunk may log before it hands back
 Progress = Callable[[float, float], None]  # (simulated time reached, end time) [s]
 
@@ -111,7 +112,7 @@ def simulate(model: Model, *, progress: Progress | None = None) -> Results:
     status = Status.RUNNING
     if not loop.start(system, ctl, ls, dp, ab, wk, 0.0, assembly.y0, solver.initial_step):
         status = Status.SINGULAR
-    chunk = min(solver.t_end, 100 * solver.max_step)
+    chunk = min(solver.t_end, MIN_CHUNK_STEPS * solver.max_step)
     with _stop_requests() as stop_requested:
         while status == Status.RUNNING:
             t_before = loop.current_time(ctl, dp, ab)
@@ -131,7 +132,7 @@ def simulate(model: Model, *, progress: Progress | None = None) -> Results:
             elapsed = time.perf_counter() - chunk_start
             if t_now > t_before and elapsed > 0:  # aim the next chunk at CHUNK_WALL_S
                 rate = (t_now - t_before) / elapsed
-                chunk = min(max(rate * CHUNK_WALL_S, solver.max_step), 10 * chunk)
+                chunk = min(max(rate * CHUNK_WALL_S, 1e-9 * solver.t_end), 10 * chunk)
     wall = time.perf_counter() - wall_start
 
     data = np.concatenate(blocks) if blocks else np.zeros((0, len(columns)))

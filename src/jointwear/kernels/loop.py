@@ -204,7 +204,11 @@ def _violation(wk):
 
 @njit(cache=True)
 def advance(sys, ctl, ls, dp, ab, wk, out, t_stop):
-    """Integrate up to t_stop [s] (or the end); return (Status, rows written into out)."""
+    """Integrate past t_stop [s] (or to the end); return (Status, rows written into out).
+
+    Steps are never shortened to land on t_stop, only on the end time, so the solution does
+    not depend on how the run is cut into chunks.
+    """
     rows = 0
     n_out = ctl.output_times.shape[0]
     n_events = ls.event_prev.shape[0]
@@ -227,11 +231,10 @@ def advance(sys, ctl, ls, dp, ab, wk, out, t_stop):
             return Status.RUNNING, rows
         if ls.counters[Counter.ACCEPTED] + ls.counters[Counter.REJECTED] >= ctl.max_steps:
             return Status.MAX_STEPS, rows
-        stop = min(t_stop, ctl.t_end)
         if ctl.method == Method.DOPRI5:
-            outcome = _step_dopri5(sys, ctl, ls, dp, wk, stop)
+            outcome = _step_dopri5(sys, ctl, ls, dp, wk, ctl.t_end)
         else:
-            outcome = _step_abm(sys, ctl, ls, ab, wk, stop)
+            outcome = _step_abm(sys, ctl, ls, ab, wk, ctl.t_end)
         if outcome == REJECTED:
             ls.counters[Counter.REJECTED] += 1
             continue
