@@ -39,7 +39,7 @@ Overrides = Annotated[
 
 def _fail(error: ModelError) -> typer.Exit:
     for line in error.problems:
-        err.print(line, markup=False, highlight=False)
+        err.print(line, markup=False, highlight=False, soft_wrap=True)
     return typer.Exit(code=2)
 
 
@@ -96,9 +96,10 @@ def run(
     stats = results.summary["stats"]
     out.print(
         f"{results.status}: {results.message}; t = {stats['t_reached']:.6g} s, "
-        f"{stats['accepted_steps']} steps, {stats['simulation_wall_s']:.3g} s wall"
+        f"{stats['accepted_steps']} steps, {stats['simulation_wall_s']:.3g} s wall",
+        soft_wrap=True,
     )
-    out.print(f"results in {out_dir}")
+    out.print(f"results in {out_dir}", soft_wrap=True)
     if results.status != "success":
         raise typer.Exit(code=1)
 
@@ -136,7 +137,7 @@ def check(model: ModelPath, overrides: Overrides = None) -> None:
 def plot(folder: Annotated[Path, typer.Argument(help="Results folder.")]) -> None:
     """Draw (again) the figures of a results folder into FOLDER/figures."""
     if not (folder / "summary.json").is_file():
-        err.print(f"{folder}: not a results folder (no summary.json)", markup=False)
+        err.print(f"{folder}: not a results folder (no summary.json)", markup=False, soft_wrap=True)
         raise typer.Exit(code=2)
     for path in save_figures(load_results(folder), folder / "figures"):
-        out.print(str(path))
+        out.print(str(path), soft_wrap=True)

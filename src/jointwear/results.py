@@ -61,11 +61,11 @@ class Results:
         """Write the results folder (created if needed); return its path."""
         path = Path(folder)
         path.mkdir(parents=True, exist_ok=True)
-        _write_text(path / "summary.json", json.dumps(self.summary, indent=2))
         _write_text(path / "model.json", self.model.model_dump_json(indent=2))
         self.timeseries.to_csv(path / "timeseries.csv", index=False, float_format="%.12g")
         self.timeseries.to_parquet(path / "timeseries.parquet", index=False)
         self.events.to_csv(path / "events.csv", index=False, float_format="%.12g")
+        _write_text(path / "summary.json", json.dumps(self.summary, indent=2))  # last: complete
         return path
 
 

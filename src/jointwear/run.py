@@ -6,7 +6,8 @@ import os
 from collections.abc import Sequence
 from pathlib import Path
 
-from .model import load_model
+from .interrupts import stop_requests
+from .model import ModelError, load_model
 from .plots import save_figures
 from .results import Results
 from .simulate import Progress, simulate
@@ -35,9 +36,13 @@ def run(
     progress
         Called after every chunk with (time reached, end time) [s].
     """
+    folder = Path(out)
+    if folder.exists() and not folder.is_dir():
+        raise ModelError([f"out: {folder} exists and is not a folder; give a folder path"])
     model = load_model(model_path, overrides)
     results = simulate(model, progress=progress)
-    folder = results.save(out)
-    if figures and len(results.timeseries) > 1:
-        save_figures(results, Path(folder) / "figures")
+    with stop_requests():  # a Ctrl-C now must not leave a half-written folder
+        results.save(folder)
+        if figures and len(results.timeseries) > 1:
+            save_figures(results, folder / "figures")
     return results

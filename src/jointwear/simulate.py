@@ -8,17 +8,15 @@ then hold everything computed up to that point, with status ``interrupted``.
 from __future__ import annotations
 
 import math
-import signal
-import threading
 import time
-from collections.abc import Callable, Iterator
-from contextlib import contextmanager
+from collections.abc import Callable
 
 import numpy as np
 import pandas as pd
 
 from . import __version__
 from .assembly import assemble
+from .interrupts import stop_requests
 from .kernels import loop
 from .kernels.abm import make_abm_state
 from .kernels.codes import N_COUNTERS, Counter, Status
@@ -39,25 +37,6 @@ def _output_times(t_end: float, interval: float) -> np.ndarray:
     if t_end - times[-1] > 1e-9 * interval:
         times = np.append(times, t_end)
     return times
-
-
-@contextmanager
-def _stop_requests() -> Iterator[list[bool]]:
-    """Turn SIGINT and SIGTERM into a flag checked between chunks (main thread only)."""
-    flag = [False]
-    if threading.current_thread() is not threading.main_thread():
-        yield flag
-        return
-
-    def request_stop(signum: int, frame: object) -> None:
-        flag[0] = True
-
-    previous = {s: signal.signal(s, request_stop) for s in (signal.SIGINT, signal.SIGTERM)}
-    try:
-        yield flag
-    finally:
-        for s, handler in previous.items():
-            signal.signal(s, handler)
 
 
 def simulate(model: Model, *, progress: Progress | None = None) -> Results:
@@ -113,7 +92,7 @@ def simulate(model: Model, *, progress: Progress | None = None) -> Results:
     if not loop.start(system, ctl, ls, dp, ab, wk, 0.0, assembly.y0, solver.initial_step):
         status = Status.SINGULAR
     chunk = min(solver.t_end, MIN_CHUNK_STEPS * solver.max_step)
-    with _stop_requests() as stop_requested:
+    with stop_requests() as stop_requested:
         while status == Status.RUNNING:
             t_before = loop.current_time(ctl, dp, ab)
             chunk_start = time.perf_counter()
