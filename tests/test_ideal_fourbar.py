@@ -6,7 +6,6 @@ crank torque and joint reactions must match the independent answers of ``referen
 magnitude over the turn, for both integrators.
 """
 
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -18,8 +17,7 @@ from references import (
     fourbar_states,
     fourbar_torque_power,
 )
-
-import jointwear as jw
+from runs import EXAMPLES, simulate_ok
 
 INTEGRATORS = ("dopri5", "abm")
 TURN = 2.0 * np.pi / CRANK_SPEED  # one crank turn [s] (0.04 s)
@@ -30,19 +28,6 @@ TIGHT = ["solver.t_end=0.04", "solver.rtol=1e-10", "solver.atol=1e-12"]
 REL_TOL = 1e-6
 
 
-@pytest.fixture(scope="module")
-def examples() -> Path:
-    return Path(__file__).parents[1] / "examples"
-
-
-def simulate(path: Path, overrides: list[str]):
-    """Load a model with overrides, run it, and insist that it finished."""
-    model = jw.load_model(path, overrides=overrides)
-    res = jw.simulate(model)
-    assert res.status == "success", getattr(res, "message", res.status)
-    return res
-
-
 def rel_err(actual, expected) -> float:
     """Largest absolute difference over the largest magnitude of the expected values."""
     expected = np.asarray(expected, dtype=float)
@@ -50,12 +35,12 @@ def rel_err(actual, expected) -> float:
 
 
 @pytest.fixture(scope="module")
-def tight_runs(examples):
+def tight_runs():
     """One crank turn per integrator at rtol 1e-10, atol 1e-12: {integrator: timeseries}."""
     runs = {}
     for integrator in INTEGRATORS:
-        res = simulate(
-            examples / "flores2009_fourbar.toml", [*TIGHT, f"solver.integrator={integrator}"]
+        res = simulate_ok(
+            EXAMPLES / "flores2009_fourbar.toml", [*TIGHT, f"solver.integrator={integrator}"]
         )
         df = res.timeseries
         # The run covers the whole turn (the last row is within one output interval of t_end).
@@ -136,12 +121,12 @@ def test_integrators_agree(tight_runs):
 
 
 @pytest.mark.parametrize("integrator", INTEGRATORS)
-def test_error_decreases_as_rtol_tightens(examples, integrator):
+def test_error_decreases_as_rtol_tightens(integrator):
     tolerances = (("1e-5", "1e-7"), ("1e-7", "1e-9"), ("1e-9", "1e-11"))  # (rtol, atol)
     errors = []
     for rtol, atol in tolerances:
-        df = simulate(
-            examples / "flores2009_fourbar.toml",
+        df = simulate_ok(
+            EXAMPLES / "flores2009_fourbar.toml",
             [
                 "solver.t_end=0.04",
                 f"solver.rtol={rtol}",
@@ -165,9 +150,9 @@ def test_error_decreases_as_rtol_tightens(examples, integrator):
 
 
 @pytest.mark.slow
-def test_constraint_violation_stays_bounded(examples):
-    path = examples / "flores2009_fourbar.toml"
-    res = simulate(path, [])  # the file as is: 1 s (25 turns), default tolerances
+def test_constraint_violation_stays_bounded():
+    path = EXAMPLES / "flores2009_fourbar.toml"
+    res = simulate_ok(path, [])  # the file as is: 1 s (25 turns), default tolerances
     df = res.timeseries
     violation = df["constraint_violation"].to_numpy()
     time = df["time"].to_numpy()
@@ -183,5 +168,5 @@ def test_constraint_violation_stays_bounded(examples):
     assert fourth <= 1.25 * third + 1e-7, (third, fourth)
     # And the stabilisation is what bounds it: without it the drift is far larger (prototype:
     # 13 times at 1 s).
-    free = simulate(path, ["solver.baumgarte_alpha=0.0", "solver.baumgarte_beta=0.0"])
+    free = simulate_ok(path, ["solver.baumgarte_alpha=0.0", "solver.baumgarte_beta=0.0"])
     assert violation.max() < 0.25 * free.timeseries["constraint_violation"].max()

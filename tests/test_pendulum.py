@@ -6,14 +6,12 @@ amplitude. Its exact period (elliptic integral, ``references.compound_pendulum_p
 dynamics, not just the linearisation. Undriven and undamped, it must conserve energy.
 """
 
-from pathlib import Path
 
 import numpy as np
 import pytest
 from references import compound_pendulum_period, mechanism_energy
+from runs import EXAMPLES, simulate_ok
 from scipy.interpolate import CubicHermiteSpline
-
-import jointwear as jw
 
 INTEGRATORS = ("dopri5", "abm")
 MASS, LENGTH, INERTIA = 1.0, 1.0, 1.0 / 12.0  # [kg], [m], about the centre [kg m^2]
@@ -25,23 +23,10 @@ BOTTOM = -0.5 * np.pi  # phi of the hanging bar [rad]
 
 
 @pytest.fixture(scope="module")
-def examples() -> Path:
-    return Path(__file__).parents[1] / "examples"
-
-
-def simulate(path: Path, overrides: list[str]):
-    """Load a model with overrides, run it, and insist that it finished."""
-    model = jw.load_model(path, overrides=overrides)
-    res = jw.simulate(model)
-    assert res.status == "success", getattr(res, "message", res.status)
-    return res
-
-
-@pytest.fixture(scope="module")
-def default_runs(examples):
+def default_runs():
     """The file as is (10 s, about 5 periods, default tolerances), per integrator."""
     return {
-        integrator: simulate(examples / "pendulum.toml", [f"solver.integrator={integrator}"])
+        integrator: simulate_ok(EXAMPLES / "pendulum.toml", [f"solver.integrator={integrator}"])
         for integrator in INTEGRATORS
     }
 
@@ -53,10 +38,10 @@ def test_reference_period_is_the_large_amplitude_one():
 
 
 @pytest.mark.parametrize("integrator", INTEGRATORS)
-def test_period_from_events(examples, integrator):
+def test_period_from_events(integrator):
     t_end = 4.0  # about two periods: crossings at T/4, 3T/4, 5T/4, 7T/4
-    res = simulate(
-        examples / "pendulum.toml",
+    res = simulate_ok(
+        EXAMPLES / "pendulum.toml",
         [
             f"solver.t_end={t_end}",
             "solver.rtol=1e-10",
