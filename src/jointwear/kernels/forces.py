@@ -52,6 +52,8 @@ def _spring_axis(q, sys, e):
     dx = p2x - p1x
     dy = p2y - p1y
     length = math.sqrt(dx * dx + dy * dy)
+    if length == 0.0:  # coincident ends: no direction, so no force (exact for l0 = 0)
+        return 0.0, 0.0, 0.0
     return dx / length, dy / length, length
 
 

@@ -25,11 +25,10 @@ def kinetic_energy(qd, sys):
 
 @njit(cache=True)
 def _reaction(wk, sys, jt, b, k):
-    """Component k of the force that joint jt's constraint rows apply to body b [N]."""
-    rows = 2
+    """Component k of the force that joint jt's two constraint rows apply to body b [N]."""
     r0 = sys.joint_row[jt]
     force = 0.0
-    for r in range(r0, r0 + rows):
+    for r in range(r0, r0 + 2):
         force -= wk.cq[r, 3 * b + k] * wk.lam[r]
     return force
 
