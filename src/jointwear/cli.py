@@ -44,7 +44,7 @@ def _fail(error: ModelError) -> typer.Exit:
 
 
 class _ProgressBar:
-    """A rich progress bar that appears only once a run has lasted PROGRESS_AFTER_S."""
+    """A progress bar on a terminal, shown once a run has lasted PROGRESS_AFTER_S."""
 
     def __init__(self) -> None:
         self.start = time.perf_counter()
@@ -53,8 +53,8 @@ class _ProgressBar:
 
     def __call__(self, t: float, t_end: float) -> None:
         if self.bar is None:
-            if time.perf_counter() - self.start < PROGRESS_AFTER_S:
-                return
+            if not err.is_terminal or time.perf_counter() - self.start < PROGRESS_AFTER_S:
+                return  # no bar in logs and pipes, nor for short runs
             self.bar = Progress(
                 TextColumn("simulating"),
                 BarColumn(),
