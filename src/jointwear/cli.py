@@ -20,7 +20,6 @@ from rich.table import Table
 
 from .assembly import assemble
 from .model import ModelError, load_model
-from .plots import save_figures
 from .results import load_results
 from .run import run as run_model
 from .system import build_system
@@ -139,5 +138,7 @@ def plot(folder: Annotated[Path, typer.Argument(help="Results folder.")]) -> Non
     if not (folder / "summary.json").is_file():
         err.print(f"{folder}: not a results folder (no summary.json)", markup=False, soft_wrap=True)
         raise typer.Exit(code=2)
+    from .plots import save_figures  # matplotlib only for this command
+
     for path in save_figures(load_results(folder), folder / "figures"):
         out.print(str(path), soft_wrap=True)

@@ -8,7 +8,6 @@ from pathlib import Path
 
 from .interrupts import stop_requests
 from .model import ModelError, load_model
-from .plots import save_figures
 from .results import Results
 from .simulate import Progress, simulate
 
@@ -44,5 +43,7 @@ def run(
     with stop_requests():  # a Ctrl-C now must not leave a half-written folder
         results.save(folder)
         if figures and len(results.timeseries) > 1:
+            from .plots import save_figures  # matplotlib only when figures are wanted
+
             save_figures(results, folder / "figures")
     return results
