@@ -76,3 +76,27 @@ class Counter(IntEnum):
 
 
 N_COUNTERS = len(Counter)
+
+
+class NormalLaw(IntEnum):
+    """Normal contact force laws (``kernels.contact``)."""
+
+    HERTZ = 0
+    LANKARANI_NIKRAVESH = 1
+    HUNT_CROSSLEY = 2
+    FLORES2011 = 3
+
+
+class FrictionLaw(IntEnum):
+    """Tangential (friction) force laws (``kernels.friction``)."""
+
+    COULOMB = 0
+    AMBROSIO = 1
+    STICK_SLIP = 2
+
+
+class WearLaw(IntEnum):
+    """Wear laws giving the depth rate dh/ds = coef * p (``kernels.wear``)."""
+
+    ARCHARD = 0
+    REYE = 1
