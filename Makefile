@@ -4,7 +4,7 @@ VENV := .venv
 BIN := $(VENV)/bin
 OUT ?= results/flores2009_fourbar
 
-.PHONY: install run test lint clean
+.PHONY: install run test lint clean clean-cache
 
 install: $(VENV)/.installed
 
@@ -25,3 +25,8 @@ lint: install
 
 clean:
 	rm -rf $(VENV) results .pytest_cache
+
+# numba's cache notices edits to a kernel's own file only: after editing a kernel that others
+# import (codes.py, kinematics.py, ...), drop the compiled cache.
+clean-cache:
+	find src -name '*.nbi' -delete -o -name '*.nbc' -delete

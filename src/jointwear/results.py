@@ -22,8 +22,6 @@ from .model import Model, parse_model
 _MESSAGES = {
     Status.RUNNING: "stopped between chunks",
     Status.SUCCESS: "reached the end time",
-    Status.STEP_UNDERFLOW: "the step size fell below the minimum; try a smaller "
-    "solver.min_step or looser tolerances",
     Status.NON_FINITE: "the state became non-finite (NaN or inf) at the minimum step; check "
     "forces and stiffness, or try tighter tolerances or a smaller solver.max_step",
     Status.SINGULAR: "the constraint Jacobian became singular (a dead-centre or lock-up "

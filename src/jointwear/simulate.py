@@ -21,7 +21,7 @@ from .kernels import loop
 from .kernels.abm import make_abm_state
 from .kernels.codes import N_COUNTERS, Counter, Status
 from .kernels.dopri5 import make_dopri5_state
-from .model import INTEGRATORS, Model
+from .model import Model
 from .results import Results, status_message
 from .system import build_system, column_names, make_work
 
@@ -61,7 +61,7 @@ def simulate(model: Model, *, progress: Progress | None = None) -> Results:
     n_state = assembly.y0.shape[0]
     output_times = _output_times(solver.t_end, solver.output_interval)
     ctl = loop.Control(
-        method=int(INTEGRATORS[solver.integrator]),
+        method=int(solver.method),
         rtol=solver.rtol,
         atol=solver.atol,
         min_step=solver.min_step,

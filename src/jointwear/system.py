@@ -135,13 +135,9 @@ def build_system(model: Model) -> System:
     """Build the kernel arrays of ``model`` (validated, SI)."""
     index = {b.name: i for i, b in enumerate(model.bodies)}
     index["ground"] = GROUND
-    points = {b.name: dict(b.points) for b in model.bodies}
-    points["ground"] = dict(model.ground.points)
     pose = {b.name: (b.position[0], b.position[1], b.angle) for b in model.bodies}
     pose["ground"] = (0.0, 0.0, 0.0)
-
-    def local(body: str, point: str) -> tuple[float, float]:
-        return points[body][point]
+    local = model.point
 
     def global_point(body: str, point: str) -> NDArray[np.float64]:
         x, y, phi = pose[body]

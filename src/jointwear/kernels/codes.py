@@ -49,8 +49,7 @@ class Status(IntEnum):
 
     RUNNING = 0  # chunk ended at its stop time; the run goes on
     SUCCESS = 1  # the end time was reached
-    STEP_UNDERFLOW = 2
-    NON_FINITE = 3
+    NON_FINITE = 3  # codes stay stable: compiled kernels hold them as constants
     SINGULAR = 4
     MAX_STEPS = 5
     INTERRUPTED = 6
