@@ -36,3 +36,14 @@ def test_rows_at_requested_times_and_end_time():
     # Every multiple of the interval up to t_end, then t_end itself (off the grid).
     expected = np.append(np.arange(11) * 0.001, 0.0105)
     np.testing.assert_array_equal(times, expected)
+
+
+@pytest.mark.parametrize(("t_end", "interval"), [(0.3, 0.1), (0.03, 1e-4), (0.007, 1e-3)])
+def test_last_row_is_at_the_end_time_on_the_grid(t_end, interval):
+    # 3 * 0.1 > 0.3 in floating point: the last grid row must still be written, at t_end.
+    model = jw.load_model(
+        EXAMPLES / "pendulum.toml", [f"solver.t_end={t_end}", f"solver.output_interval={interval}"]
+    )
+    times = jw.simulate(model).timeseries["time"].to_numpy()
+    assert times[-1] == t_end
+    assert len(times) == round(t_end / interval) + 1

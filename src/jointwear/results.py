@@ -59,6 +59,7 @@ class Results:
         """Write the results folder (created if needed); return its path."""
         path = Path(folder)
         path.mkdir(parents=True, exist_ok=True)
+        (path / "summary.json").unlink(missing_ok=True)  # until rewritten, not a complete folder
         _write_text(path / "model.json", self.model.model_dump_json(indent=2))
         self.timeseries.to_csv(path / "timeseries.csv", index=False, float_format="%.12g")
         self.timeseries.to_parquet(path / "timeseries.parquet", index=False)

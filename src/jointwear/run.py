@@ -35,10 +35,9 @@ def run(
     progress
         Called after every chunk with (time reached, end time) [s].
     """
-    folder = Path(out)
-    if folder.exists() and not folder.is_dir():
-        raise ModelError([f"out: {folder} exists and is not a folder; give a folder path"])
     model = load_model(model_path, overrides)
+    folder = Path(out)
+    _check_folder(folder)
     results = simulate(model, progress=progress)
     with stop_requests():  # a Ctrl-C now must not leave a half-written folder
         results.save(folder)
@@ -47,3 +46,10 @@ def run(
 
             save_figures(results, folder / "figures")
     return results
+
+
+def _check_folder(folder: Path) -> None:
+    """Refuse, before the run, an output path that cannot become a folder."""
+    existing = next(p for p in (folder, *folder.parents) if p.exists())
+    if not existing.is_dir():
+        raise ModelError([f"out: {existing} exists and is not a folder; give a folder path"])

@@ -26,14 +26,14 @@ from .results import Results, status_message
 from .system import build_system, column_names, make_work
 
 CHUNK_WALL_S = 0.2  # target wall time of one compiled chunk [s]
-MIN_CHUNK_STEPS = 100  # the first chunk spans this many maximum steps
+MIN_CHUNK_STEPS = 100  # the first chunk: this many maximum steps, and at least this many steps
 EVENT_CAPACITY = 4096  # crossings one chunk may log before it hands back
 Progress = Callable[[float, float], None]  # (simulated time reached, end time) [s]
 
 
 def _output_times(t_end: float, interval: float) -> np.ndarray:
     count = math.floor(t_end / interval * (1.0 + 1e-12)) + 1
-    times = np.arange(count) * interval
+    times = np.minimum(np.arange(count) * interval, t_end)  # 3 * 0.1 must not pass 0.3
     if t_end - times[-1] > 1e-9 * interval:
         times = np.append(times, t_end)
     return times
@@ -92,11 +92,15 @@ def simulate(model: Model, *, progress: Progress | None = None) -> Results:
     if not loop.start(system, ctl, ls, dp, ab, wk, 0.0, assembly.y0, solver.initial_step):
         status = Status.SINGULAR
     chunk = min(solver.t_end, MIN_CHUNK_STEPS * solver.max_step)
+    budget = MIN_CHUNK_STEPS  # steps a chunk may take, so a stalled run still hands back
     with stop_requests() as stop_requested:
         while status == Status.RUNNING:
             t_before = loop.current_time(ctl, dp, ab)
             chunk_start = time.perf_counter()
-            code, rows = loop.advance(system, ctl, ls, dp, ab, wk, buffer, t_before + chunk)
+            steps_before = ls.counters[Counter.ACCEPTED] + ls.counters[Counter.REJECTED]
+            code, rows = loop.advance(
+                system, ctl, ls, dp, ab, wk, buffer, t_before + chunk, steps_before + budget
+            )
             status = Status(code)
             blocks.append(buffer[:rows].copy())
             for i in range(ls.counters[Counter.EVENTS]):
@@ -109,9 +113,12 @@ def simulate(model: Model, *, progress: Progress | None = None) -> Results:
             if stop_requested[0] and status == Status.RUNNING:
                 status = Status.INTERRUPTED
             elapsed = time.perf_counter() - chunk_start
-            if t_now > t_before and elapsed > 0:  # aim the next chunk at CHUNK_WALL_S
-                rate = (t_now - t_before) / elapsed
-                chunk = min(max(rate * CHUNK_WALL_S, 1e-9 * solver.t_end), 10 * chunk)
+            steps = ls.counters[Counter.ACCEPTED] + ls.counters[Counter.REJECTED] - steps_before
+            if elapsed > 0:  # aim the next chunk at CHUNK_WALL_S, in time and in steps
+                budget = max(MIN_CHUNK_STEPS, min(int(steps / elapsed * CHUNK_WALL_S), 10 * budget))
+                if t_now > t_before:
+                    rate = (t_now - t_before) / elapsed
+                    chunk = min(max(rate * CHUNK_WALL_S, 1e-9 * solver.t_end), 10 * chunk)
     wall = time.perf_counter() - wall_start
 
     data = np.concatenate(blocks) if blocks else np.zeros((0, len(columns)))

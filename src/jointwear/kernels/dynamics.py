@@ -12,6 +12,8 @@ its Schur complement, M being diagonal: (Phi_q M^-1 Phi_q^T) lam = Phi_q M^-1 g 
 then q'' = M^-1 (g - Phi_q^T lam). Baumgarte (1972), Nikravesh (1988) sec. 13.
 """
 
+import math
+
 from numba import njit
 
 from .constraints import evaluate_constraints
@@ -54,3 +56,12 @@ def rhs(t, y, sys, wk, ydot):
         ydot[c] = qd[c]
         ydot[n + c] = sys.inv_mass[c] * force
     return True
+
+
+@njit(cache=True)
+def constraint_norm(wk):
+    """2-norm of Phi from the last evaluation [m, rad]."""
+    total = 0.0
+    for r in range(wk.phi.shape[0]):
+        total += wk.phi[r] * wk.phi[r]
+    return math.sqrt(total)

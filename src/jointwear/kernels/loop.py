@@ -17,7 +17,7 @@ from numba import njit
 
 from . import abm, dopri5
 from .codes import Counter, EventDirection, Method, Status
-from .dynamics import rhs
+from .dynamics import constraint_norm, rhs
 from .outputs import write_row
 
 ACCEPTED = 0
@@ -103,9 +103,14 @@ def start(sys, ctl, ls, dp, ab, wk, t0, y0, h0):
 
 
 @njit(cache=True)
+def _at_min_step(h, ctl):
+    return h <= ctl.min_step * (1.0 + 1e-12)
+
+
+@njit(cache=True)
 def _forced(h, err, ctl, ls):
     """Whether a failed error test is accepted anyway because h is at the minimum step."""
-    if h <= ctl.min_step * (1.0 + 1e-12) and math.isfinite(err):
+    if _at_min_step(h, ctl) and math.isfinite(err):
         ls.counters[Counter.MIN_STEP_HITS] += 1
         return True
     return False
@@ -118,12 +123,15 @@ def _step_dopri5(sys, ctl, ls, dp, wk, t_stop):
         ts = dopri5.dopri5_stage(dp, s)
         ls.counters[Counter.RHS_EVALS] += 1
         if not rhs(ts, dp.ystage, sys, wk, dp.k[s]):
-            return -Status.SINGULAR
+            if _at_min_step(h, ctl):
+                return -Status.SINGULAR
+            dopri5.dopri5_reject(dp, math.inf)  # a trial state near a dead centre: shorten
+            return REJECTED
     err = dopri5.dopri5_error(dp, ctl.rtol, ctl.atol)
     if err <= 1.0 or _forced(h, err, ctl, ls):
         dopri5.dopri5_accept(dp, err)
         return ACCEPTED
-    if h <= ctl.min_step * (1.0 + 1e-12):
+    if _at_min_step(h, ctl):
         return -Status.NON_FINITE
     dopri5.dopri5_reject(dp, err)
     return REJECTED
@@ -135,7 +143,10 @@ def _step_abm(sys, ctl, ls, ab, wk, t_stop):
     h = ab.scal[abm.S_H]
     ls.counters[Counter.RHS_EVALS] += 1
     if not rhs(t_new, ls.y_pred, sys, wk, ls.yp_pred):
-        return -Status.SINGULAR
+        if _at_min_step(h, ctl):
+            return -Status.SINGULAR
+        abm.abm_reject(ab)  # a predicted state near a dead centre: shorten
+        return REJECTED
     err = abm.abm_correct(ab, ls.yp_pred, ctl.rtol, ctl.atol, ls.y_corr)
     if err <= 1.0 or _forced(h, err, ctl, ls):
         ls.counters[Counter.RHS_EVALS] += 1
@@ -143,7 +154,7 @@ def _step_abm(sys, ctl, ls, ab, wk, t_stop):
             return -Status.SINGULAR
         abm.abm_accept(ab, ls.y_corr, ls.yp_corr)
         return ACCEPTED
-    if h <= ctl.min_step * (1.0 + 1e-12):
+    if _at_min_step(h, ctl):
         return -Status.NON_FINITE
     abm.abm_reject(ab)
     return REJECTED
@@ -195,16 +206,10 @@ def _log_events(sys, ctl, ls, dp, ab, t_old, t_new, y_new):
 
 
 @njit(cache=True)
-def _violation(wk):
-    total = 0.0
-    for r in range(wk.phi.shape[0]):
-        total += wk.phi[r] * wk.phi[r]
-    return math.sqrt(total)
-
-
-@njit(cache=True)
-def advance(sys, ctl, ls, dp, ab, wk, out, t_stop):
+def advance(sys, ctl, ls, dp, ab, wk, out, t_stop, step_stop):
     """Integrate past t_stop [s] (or to the end); return (Status, rows written into out).
+
+    The chunk also hands back once the step count (accepted + rejected) reaches step_stop.
 
     Steps are never shortened to land on t_stop, only on the end time, so the solution does
     not depend on how the run is cut into chunks.
@@ -229,8 +234,11 @@ def advance(sys, ctl, ls, dp, ab, wk, out, t_stop):
         full = rows + ctl.rows_per_step > out.shape[0]
         if full or ls.counters[Counter.EVENTS] + n_events > ls.event_time.shape[0]:
             return Status.RUNNING, rows
-        if ls.counters[Counter.ACCEPTED] + ls.counters[Counter.REJECTED] >= ctl.max_steps:
+        steps = ls.counters[Counter.ACCEPTED] + ls.counters[Counter.REJECTED]
+        if steps >= ctl.max_steps:
             return Status.MAX_STEPS, rows
+        if steps >= step_stop:
+            return Status.RUNNING, rows
         if ctl.method == Method.DOPRI5:
             outcome = _step_dopri5(sys, ctl, ls, dp, wk, ctl.t_end)
         else:
@@ -241,7 +249,7 @@ def advance(sys, ctl, ls, dp, ab, wk, out, t_stop):
         if outcome < 0:
             return -outcome, rows
         ls.counters[Counter.ACCEPTED] += 1
-        ls.max_violation[0] = max(ls.max_violation[0], _violation(wk))
+        ls.max_violation[0] = max(ls.max_violation[0], constraint_norm(wk))
         y_new = current_state(ctl, dp, ab)
         for i in range(y_new.shape[0]):
             if not math.isfinite(y_new[i]):

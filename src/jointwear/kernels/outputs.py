@@ -6,11 +6,9 @@ per joint the reaction force (fx, fy) on its second body; kinetic and potential 
 2-norm of the position constraints.
 """
 
-import math
-
 from numba import njit
 
-from .dynamics import rhs
+from .dynamics import constraint_norm, rhs
 from .forces import potential_energy
 
 
@@ -60,8 +58,5 @@ def write_row(t, y, sys, wk, ydot, row):
         c += 2
     row[c] = kinetic_energy(y[n:], sys)
     row[c + 1] = potential_energy(y[:n], sys)
-    violation = 0.0
-    for r in range(wk.phi.shape[0]):
-        violation += wk.phi[r] * wk.phi[r]
-    row[c + 2] = math.sqrt(violation)
+    row[c + 2] = constraint_norm(wk)
     return ok
