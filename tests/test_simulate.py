@@ -47,3 +47,11 @@ def test_last_row_is_at_the_end_time_on_the_grid(t_end, interval):
     times = jw.simulate(model).timeseries["time"].to_numpy()
     assert times[-1] == t_end
     assert len(times) == round(t_end / interval) + 1
+
+
+def test_absurd_output_size_is_refused_up_front():
+    with pytest.raises(jw.ModelError) as error:
+        jw.load_model(
+            EXAMPLES / "pendulum.toml", ["solver.t_end=1000", "solver.output_interval=1e-9"]
+        )
+    assert "raise output_interval" in error.value.problems[0]

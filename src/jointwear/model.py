@@ -12,7 +12,7 @@ from os import PathLike
 from pathlib import Path
 from typing import Annotated, ClassVar, Generic, Literal, TypeVar
 
-from annotated_types import Ge, Gt
+from annotated_types import Ge, Gt, Le
 from pydantic import (
     AfterValidator,
     AllowInfNan,
@@ -59,6 +59,7 @@ from jointwear.units import (
 )
 
 INTEGRATORS: dict[str, Method] = {"dopri5": Method.DOPRI5, "abm": Method.ABM}
+MAX_OUTPUT_ROWS = 5e7  # about 16 GB of time series for a small mechanism
 
 
 def _one_of(table: dict[str, object], what: str) -> AfterValidator:
@@ -309,7 +310,7 @@ class Solver(_Table):
     baumgarte_beta: Annotated[Number, Ge(0)] = 5.0
     output_interval: PositiveTime = 1e-4
     t_end: PositiveTime = 1.0
-    max_steps: Annotated[int, Strict(), Gt(0)] = 10_000_000
+    max_steps: Annotated[int, Strict(), Gt(0), Le(2**62)] = 10_000_000
     assembly_tolerance: Annotated[Length, Gt(0)] = 1e-10
 
     @model_validator(mode="after")
@@ -318,6 +319,12 @@ class Solver(_Table):
             raise ValueError(
                 f"min_step {self.min_step:g}, initial_step {self.initial_step:g}, max_step "
                 f"{self.max_step:g} [s] are out of order; need min_step <= initial_step <= max_step"
+            )
+        rows = self.t_end / self.output_interval
+        if rows > MAX_OUTPUT_ROWS:
+            raise ValueError(
+                f"t_end / output_interval asks for {rows:.3g} output rows; at most "
+                f"{MAX_OUTPUT_ROWS:.0e} are allowed; raise output_interval"
             )
         return self
 

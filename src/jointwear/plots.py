@@ -9,23 +9,19 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt
 import numpy as np
 import pandas as pd
-from matplotlib.figure import Figure
+from matplotlib.figure import Figure  # figures without pyplot: no global backend switch
 
 from .results import Results
 
-DRIVER_TYPES = ("constant_speed",)
+CRANK_FUNCTIONS = ("constant_speed",)  # driver functions that turn a crank
 
 
 def _crank(results: Results) -> tuple[str, str, float] | None:
     """(driver name, driven body, speed [rad/s]) of the first constant-speed angle driver."""
     for driver in results.model.drivers:
-        if driver.type == "angle" and driver.function.type in DRIVER_TYPES:
+        if driver.type == "angle" and driver.function.type in CRANK_FUNCTIONS:
             return driver.name, driver.body, driver.function.speed
     return None
 
@@ -49,7 +45,8 @@ def plot_cycle(results: Results) -> Figure:
     angle = np.degrees(turn[f"phi_{driven}"].to_numpy()) % 360.0
     order = np.argsort(angle)
     bodies = [b.name for b in results.model.bodies if b.name != driven]
-    fig, axes = plt.subplots(3, 1, sharex=True, figsize=(7.0, 8.0), layout="constrained")
+    fig = Figure(figsize=(7.0, 8.0), layout="constrained")
+    axes = fig.subplots(3, 1, sharex=True)
     for body in bodies:
         axes[0].plot(angle[order], turn[f"omega_{body}"].to_numpy()[order], label=body)
         axes[1].plot(angle[order], turn[f"alpha_{body}"].to_numpy()[order], label=body)
@@ -71,7 +68,8 @@ def plot_cycle(results: Results) -> Figure:
 def plot_energy(results: Results) -> Figure:
     """Kinetic, potential and total energy, and the constraint violation, against time."""
     df = results.timeseries
-    fig, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(7.0, 6.0), layout="constrained")
+    fig = Figure(figsize=(7.0, 6.0), layout="constrained")
+    top, bottom = fig.subplots(2, 1, sharex=True)
     total = df["energy_kinetic"] + df["energy_potential"]
     top.plot(df["time"], df["energy_kinetic"], label="kinetic")
     top.plot(df["time"], df["energy_potential"], label="potential")
@@ -98,6 +96,5 @@ def save_figures(results: Results, folder: str | Path) -> list[Path]:
     for name, draw in figures.items():
         fig = draw(results)
         fig.savefig(path / f"{name}.png", dpi=150)
-        plt.close(fig)
         written.append(path / f"{name}.png")
     return written
