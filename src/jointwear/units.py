@@ -96,9 +96,14 @@ def _to_si(value: object, dimension: str, expected: str) -> float:
     if isinstance(value, bool) or not isinstance(value, int | float | str):
         raise ValueError(f"{value!r} is not a number; {expected} (plain numbers are SI)")
     if not isinstance(value, str):
-        if not math.isfinite(value):
-            raise ValueError(f"{value!r} is not a finite number; {expected}")
-        return float(value)
+        try:
+            number = float(value)  # an int of hundreds of digits overflows here
+        except OverflowError:
+            number = math.inf
+        if not math.isfinite(number):
+            shown = repr(value) if len(repr(value)) <= 20 else repr(value)[:20] + "..."
+            raise ValueError(f"{shown} is not a finite number; {expected}")
+        return number
     match = _QUANTITY.fullmatch(value)
     if match is None:
         raise ValueError(f"cannot read {value!r} as a number and a unit; {expected}")
