@@ -8,11 +8,11 @@ scipy's DOP853 on the three rigid-body equations. Motions prescribed by drivers 
 ~1e-13 of their scale, free motions to the integrator's ~1e-10.
 """
 
-from pathlib import Path
 
 import numpy as np
 import pytest
 from references import BODY_NAMES, fourbar_states
+from runs import EXAMPLES
 from scipy.integrate import cumulative_simpson, solve_ivp
 
 import jointwear as jw
@@ -20,7 +20,6 @@ from jointwear.assembly import assemble
 from jointwear.model import parse_model
 from jointwear.system import build_system
 
-EXAMPLES = Path(__file__).parents[1] / "examples"
 TIGHT = {"rtol": 1e-10, "atol": 1e-12}
 INTEGRATORS = ("dopri5", "abm")
 G = 9.81  # [m/s^2]

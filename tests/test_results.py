@@ -8,12 +8,12 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 import pytest
+from runs import EXAMPLES
 
 import jointwear as jw
 from jointwear.kernels.codes import Status
 from jointwear.results import status_message
 
-EXAMPLES = Path(__file__).parents[1] / "examples"
 FILES = ("summary.json", "model.json", "timeseries.csv", "timeseries.parquet", "events.csv")
 
 

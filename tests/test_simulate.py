@@ -1,16 +1,15 @@
 """The run loop: chunking is invisible, outputs land on the requested times."""
 
 import importlib
-from pathlib import Path
 
 import numpy as np
 import pytest
+from runs import EXAMPLES
 
 import jointwear as jw
 
 simulate_module = importlib.import_module("jointwear.simulate")  # the module, not the function
 
-EXAMPLES = Path(__file__).parents[1] / "examples"
 
 
 @pytest.mark.parametrize("integrator", ["dopri5", "abm"])
