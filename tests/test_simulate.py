@@ -11,7 +11,6 @@ import jointwear as jw
 simulate_module = importlib.import_module("jointwear.simulate")  # the module, not the function
 
 
-
 @pytest.mark.parametrize("integrator", ["dopri5", "abm"])
 def test_result_does_not_depend_on_chunking(monkeypatch, integrator):
     model = jw.load_model(
