@@ -18,6 +18,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 import pytest
+from runs import FOURBAR_COLUMNS
 from typer.testing import CliRunner
 
 import jointwear as jw
@@ -133,14 +134,7 @@ def test_run_column_names_follow_the_model(tmp_path):
     result = invoke("run", FOURBAR, "--out", out, "--t-end", 0.01, "--no-figures")
     assert result.exit_code == 0, result.output
     csv, parquet = read_csv_and_parquet(out)
-    body = ["x", "y", "phi", "vx", "vy", "omega", "ax", "ay", "alpha"]
-    expected = ["time"]
-    for name in ("crank", "coupler", "follower"):
-        expected += [f"{c}_{name}" for c in body]
-    expected.append("torque_motor")
-    for joint in ("ground_crank", "crank_coupler", "coupler_follower", "ground_follower"):
-        expected += [f"{joint}_fx", f"{joint}_fy"]
-    expected += ["energy_kinetic", "energy_potential", "constraint_violation"]
+    expected = FOURBAR_COLUMNS
     assert list(csv.columns) == expected
     assert list(parquet.columns) == expected
     # Crank driven at 1500 rpm from 90 deg.

@@ -8,7 +8,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 import pytest
-from runs import EXAMPLES
+from runs import EXAMPLES, FOURBAR_COLUMNS
 
 import jointwear as jw
 from jointwear.kernels.codes import Status
@@ -104,14 +104,7 @@ def test_save_replaces_an_existing_folder(pendulum, fourbar, tmp_path):
 
 
 def test_column_names_follow_the_model(fourbar):
-    body = ["x", "y", "phi", "vx", "vy", "omega", "ax", "ay", "alpha"]
-    expected = ["time"]
-    for name in ("crank", "coupler", "follower"):
-        expected += [f"{c}_{name}" for c in body]
-    expected.append("torque_motor")
-    for joint in ("ground_crank", "crank_coupler", "coupler_follower", "ground_follower"):
-        expected += [f"{joint}_fx", f"{joint}_fy"]
-    expected += ["energy_kinetic", "energy_potential", "constraint_violation"]
+    expected = FOURBAR_COLUMNS
     assert list(fourbar.timeseries.columns) == expected
     ts = fourbar.timeseries
     assert ts["time"].iloc[-1] == 0.01
