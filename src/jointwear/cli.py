@@ -126,9 +126,7 @@ def check(model: ModelPath, overrides: Overrides = None) -> None:
     for i, body in enumerate(parsed.bodies):
         x, y, phi = assembly.y0[3 * i : 3 * i + 3]
         vx, vy, w = assembly.y0[n + 3 * i : n + 3 * i + 3]
-        table.add_row(
-            body.name, *(f"{v:.6g}" for v in (x, y, math.degrees(phi), vx, vy, w))
-        )
+        table.add_row(body.name, *(f"{v:.6g}" for v in (x, y, math.degrees(phi), vx, vy, w)))
     out.print(table)
 
 

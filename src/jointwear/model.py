@@ -15,9 +15,7 @@ from typing import Annotated, ClassVar, Generic, Literal, TypeVar
 from annotated_types import Ge, Gt, Le
 from pydantic import (
     AfterValidator,
-    AllowInfNan,
     BaseModel,
-    ConfigDict,
     Discriminator,
     Field,
     Strict,
@@ -29,15 +27,15 @@ from pydantic import (
 )
 
 from jointwear.kernels.codes import DriverKind, ForceKind, FunctionKind, JointKind, Method
+from jointwear.model_clearance import Clearance
 from jointwear.model_errors import (
     SCALAR_TAG,
     ModelError,
-    did_you_mean,
     from_validation_error,
     reference_problems,
-    unknown,
 )
 from jointwear.model_overrides import apply_overrides
+from jointwear.model_tables import Name, Number, Table, one_of
 from jointwear.units import (
     Acceleration2,
     Angle,
@@ -60,56 +58,14 @@ from jointwear.units import (
 
 INTEGRATORS: dict[str, Method] = {"dopri5": Method.DOPRI5, "abm": Method.ABM}
 MAX_OUTPUT_ROWS = 5e7  # about 16 GB of time series for a small mechanism
-
-
-def _one_of(table: dict[str, object], what: str) -> AfterValidator:
-    def check(value: str) -> str:
-        if value not in table:
-            raise ValueError(unknown(what, value, list(table), f"known {what}s"))
-        return value
-
-    return AfterValidator(check)
-
-
-def _check_name(name: str) -> str:
-    if not re.fullmatch(r"[A-Za-z][A-Za-z0-9_]*", name):
-        raise ValueError(
-            f"{name!r} is not a valid name; use letters, digits and _, starting with a letter"
-        )
-    if name == "ground":
-        raise ValueError("'ground' is reserved; choose another name")
-    return name
-
-
-Name = Annotated[str, AfterValidator(_check_name)]
-Number = Annotated[float, Strict(), AllowInfNan(False)]
 _T = TypeVar("_T")
 _RateT = TypeVar("_RateT")
-
-
-class _Table(BaseModel):
-    """A table of the model file: immutable, unknown keys refused."""
-
-    model_config = ConfigDict(extra="forbid", frozen=True)
-
-    @model_validator(mode="before")
-    @classmethod
-    def _known_keys(cls, data: object) -> object:
-        if isinstance(data, dict):
-            extra = [key for key in data if key not in cls.model_fields]
-            if extra:
-                hint = did_you_mean(extra[0], cls.model_fields) if len(extra) == 1 else ""
-                raise ValueError(
-                    f"unknown key{'s' * (len(extra) > 1)} {', '.join(map(repr, extra))}; "
-                    f"known keys are {', '.join(cls.model_fields)}{hint}"
-                )
-        return data
 
 
 # Functions of time ------------------------------------------------------------------------
 
 
-class ConstantSpeed(_Table, Generic[_RateT, _T]):
+class ConstantSpeed(Table, Generic[_RateT, _T]):
     """f(t) = initial + speed t; `initial` None means the value at the initial pose guess."""
 
     type: Literal["constant_speed"] = "constant_speed"
@@ -117,7 +73,7 @@ class ConstantSpeed(_Table, Generic[_RateT, _T]):
     initial: _T | None = None
 
 
-class Polynomial(_Table):
+class Polynomial(Table):
     """f(t) = sum_k coefficients[k] t^k, SI coefficients."""
 
     kind: ClassVar = FunctionKind.POLYNOMIAL
@@ -125,7 +81,7 @@ class Polynomial(_Table):
     coefficients: Annotated[tuple[Number, ...], Field(min_length=1, max_length=8)]
 
 
-class Harmonic(_Table, Generic[_T]):
+class Harmonic(Table, Generic[_T]):
     """f(t) = offset + amplitude sin(angular_frequency t + phase)."""
 
     kind: ClassVar = FunctionKind.HARMONIC
@@ -164,13 +120,13 @@ DistanceFunction = Annotated[
 # Ground, bodies, joints, drivers -----------------------------------------------------------
 
 
-class Ground(_Table):
+class Ground(Table):
     """Fixed points of the ground [m], global coordinates."""
 
     points: dict[Name, Vector2] = Field(default_factory=dict)
 
 
-class Body(_Table):
+class Body(Table):
     """A moving rigid body; `position`, `angle` and velocities are initial guesses."""
 
     name: Name
@@ -183,17 +139,22 @@ class Body(_Table):
     points: dict[Name, Vector2] = Field(default_factory=dict)
 
 
-class _Joint(_Table):
+class _Joint(Table):
     name: Name
     bodies: tuple[str, str]
     points: tuple[str, str]
 
 
 class RevoluteJoint(_Joint):
-    """Ideal pin joining `points[0]` of `bodies[0]` and `points[1]` of `bodies[1]`."""
+    """Pin joining `points[0]` of `bodies[0]` and `points[1]` of `bodies[1]`.
+
+    Ideal without `clearance`; with it, `bodies[0]` has the bearing and `bodies[1]` the
+    journal, and the joint acts through contact forces instead of constraints.
+    """
 
     kind: ClassVar = JointKind.REVOLUTE
     type: Literal["revolute"] = "revolute"
+    clearance: Clearance | None = None
 
 
 def _nonzero(axis: tuple[float, float]) -> tuple[float, float]:
@@ -210,7 +171,7 @@ class TranslationalJoint(_Joint):
     axis: Annotated[tuple[Number, Number], AfterValidator(_nonzero)]
 
 
-class AngleDriver(_Table):
+class AngleDriver(Table):
     """Prescribes the angle of `body` relative to `relative_to` [rad]."""
 
     kind: ClassVar = DriverKind.ANGLE
@@ -221,7 +182,7 @@ class AngleDriver(_Table):
     function: AngleFunction
 
 
-class DistanceDriver(_Table):
+class DistanceDriver(Table):
     """Prescribes the slide of translational joint `joint` [m]."""
 
     kind: ClassVar = DriverKind.DISTANCE
@@ -234,7 +195,7 @@ class DistanceDriver(_Table):
 # Forces, solver, events ---------------------------------------------------------------------
 
 
-class Gravity(_Table):
+class Gravity(Table):
     """Uniform gravitational acceleration [m/s^2] on every body."""
 
     type: Literal["gravity"] = "gravity"
@@ -242,7 +203,7 @@ class Gravity(_Table):
     acceleration: Acceleration2
 
 
-class PointForce(_Table):
+class PointForce(Table):
     """Force [N] in global components at a named point of a body."""
 
     kind: ClassVar = ForceKind.POINT_FORCE
@@ -253,7 +214,7 @@ class PointForce(_Table):
     force: tuple[ForceValue, ForceValue]
 
 
-class AppliedTorque(_Table):
+class AppliedTorque(Table):
     """Torque [N m] on a body, counter-clockwise positive."""
 
     kind: ClassVar = ForceKind.TORQUE
@@ -263,7 +224,7 @@ class AppliedTorque(_Table):
     torque: TorqueValue
 
 
-class SpringDamper(_Table):
+class SpringDamper(Table):
     """Translational spring-damper along the line between two points."""
 
     kind: ClassVar = ForceKind.SPRING_DAMPER
@@ -276,7 +237,7 @@ class SpringDamper(_Table):
     free_length: Annotated[Length, Ge(0)]
 
 
-class RotationalSpringDamper(_Table):
+class RotationalSpringDamper(Table):
     """Rotational spring-damper on the relative angle phi_2 - phi_1."""
 
     kind: ClassVar = ForceKind.ROTATIONAL_SPRING_DAMPER
@@ -297,10 +258,10 @@ Load = Annotated[
 PositiveTime = Annotated[Time, Gt(0)]
 
 
-class Solver(_Table):
+class Solver(Table):
     """Integration and output settings; times in [s], rates in [1/s]."""
 
-    integrator: Annotated[str, _one_of(INTEGRATORS, "integrator")] = "dopri5"
+    integrator: Annotated[str, one_of(INTEGRATORS, "integrator")] = "dopri5"
     rtol: Annotated[Number, Gt(0)] = 1e-6
     atol: Annotated[Number, Gt(0)] = 1e-8
     min_step: PositiveTime = 1e-12
@@ -309,6 +270,7 @@ class Solver(_Table):
     baumgarte_alpha: Annotated[Number, Ge(0)] = 5.0
     baumgarte_beta: Annotated[Number, Ge(0)] = 5.0
     output_interval: PositiveTime = 1e-4
+    wear_snapshot_interval: PositiveTime | None = None  # default: a fifth of t_end
     t_end: PositiveTime = 1.0
     max_steps: Annotated[int, Strict(), Gt(0), Le(2**62)] = 10_000_000
     assembly_tolerance: Annotated[Length, Gt(0)] = 1e-10
@@ -334,7 +296,7 @@ class Solver(_Table):
         return INTEGRATORS[self.integrator]
 
 
-class Event(_Table):
+class Event(Table):
     """Crossing of a body's x or y [m] or phi [rad] through `value`."""
 
     name: Name
@@ -354,7 +316,7 @@ class Event(_Table):
 # The model ---------------------------------------------------------------------------------
 
 
-class Model(_Table):
+class Model(Table):
     """A whole model file, validated, in SI units."""
 
     name: Annotated[str, Field(min_length=1)]

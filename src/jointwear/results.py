@@ -1,9 +1,11 @@
 """Results of a run, and their folder on disk.
 
-A results folder holds ``summary.json`` (status, settings, version, run statistics),
-``timeseries.csv`` and ``timeseries.parquet`` (the same table), ``events.csv`` and
-``model.json`` (the resolved model, SI), so that it describes itself; ``load_results`` reads
-it back.
+A results folder holds ``summary.json`` (status, settings, version, run statistics, and
+per clearance joint its contact and wear figures), ``timeseries.csv`` and
+``timeseries.parquet`` (the same table), ``events.csv`` and ``model.json`` (the resolved
+model, SI), so that it describes itself; with clearance joints also ``wear.csv`` (final
+profiles), ``wear_snapshots.csv`` and ``impacts.csv`` (``clearance_results``).
+``load_results`` reads it back.
 """
 
 from __future__ import annotations
@@ -11,7 +13,7 @@ from __future__ import annotations
 import json
 import os
 import tempfile
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 import pandas as pd
@@ -38,12 +40,23 @@ def status_message(status: Status) -> str:
 
 @dataclass(frozen=True)
 class Results:
-    """Outcome of ``simulate``: time series, event log and summary of one model."""
+    """Outcome of ``simulate``: time series, event log and summary of one model.
+
+    ``wear``, ``wear_snapshots`` and ``impacts`` are empty without clearance joints.
+    """
 
     model: Model
     timeseries: pd.DataFrame
     events: pd.DataFrame
     summary: dict
+    wear: pd.DataFrame = field(default_factory=pd.DataFrame)
+    wear_snapshots: pd.DataFrame = field(default_factory=pd.DataFrame)
+    impacts: pd.DataFrame = field(default_factory=pd.DataFrame)
+
+    @property
+    def has_clearance(self) -> bool:
+        """Whether the model has clearance joints (and so wear and impact tables)."""
+        return "clearance_joints" in self.summary
 
     @property
     def status(self) -> str:
@@ -64,8 +77,15 @@ class Results:
         self.timeseries.to_csv(path / "timeseries.csv", index=False, float_format="%.12g")
         self.timeseries.to_parquet(path / "timeseries.parquet", index=False)
         self.events.to_csv(path / "events.csv", index=False, float_format="%.12g")
+        if self.has_clearance:
+            for name in _CLEARANCE_TABLES:
+                table = getattr(self, name)
+                table.to_csv(path / f"{name}.csv", index=False, float_format="%.12g")
         _write_text(path / "summary.json", json.dumps(self.summary, indent=2))  # last: complete
         return path
+
+
+_CLEARANCE_TABLES = ("wear", "wear_snapshots", "impacts")
 
 
 def _write_text(path: Path, text: str) -> None:
@@ -79,9 +99,15 @@ def load_results(folder: str | os.PathLike) -> Results:
     """Read a results folder written by ``Results.save``."""
     path = Path(folder)
     model_data = json.loads((path / "model.json").read_text())
+    tables = {
+        name: pd.read_csv(path / f"{name}.csv")
+        for name in _CLEARANCE_TABLES
+        if (path / f"{name}.csv").exists()
+    }
     return Results(
         model=parse_model(model_data),
         timeseries=pd.read_parquet(path / "timeseries.parquet"),
         events=pd.read_csv(path / "events.csv"),
         summary=json.loads((path / "summary.json").read_text()),
+        **tables,
     )

@@ -16,18 +16,28 @@ import pandas as pd
 
 from . import __version__
 from .assembly import assemble
+from .clearance_results import (
+    IMPACT_COLUMNS,
+    clearance_joint_names,
+    impact_rows,
+    joint_summaries,
+    snapshot_table,
+    wear_table,
+)
 from .interrupts import stop_requests
 from .kernels import loop
 from .kernels.abm import make_abm_state
 from .kernels.codes import N_COUNTERS, Counter, Status
+from .kernels.contact_steps import N_TOTALS
 from .kernels.dopri5 import make_dopri5_state
 from .model import Model
 from .results import Results, status_message
-from .system import build_system, column_names, make_work
+from .system import System, build_system, column_names, make_work
 
 CHUNK_WALL_S = 0.2  # target wall time of one compiled chunk [s]
 MIN_CHUNK_STEPS = 100  # the first chunk: this many maximum steps, and at least this many steps
-EVENT_CAPACITY = 4096  # crossings one chunk may log before it hands back
+EVENT_CAPACITY = 4096  # crossings (and contact onsets) one chunk may log before it hands back
+SNAPSHOTS_BY_DEFAULT = 5  # wear snapshots over the run unless wear_snapshot_interval is set
 Progress = Callable[[float, float], None]  # (simulated time reached, end time) [s]
 
 
@@ -37,6 +47,33 @@ def _output_times(t_end: float, interval: float) -> np.ndarray:
     if t_end - times[-1] > 1e-9 * interval:
         times = np.append(times, t_end)
     return times
+
+
+def _snapshot_times(t_end: float, interval: float | None) -> np.ndarray:
+    interval = interval or t_end / SNAPSHOTS_BY_DEFAULT
+    count = math.floor(t_end / interval * (1.0 + 1e-12))
+    return np.minimum(np.arange(1, count + 1) * interval, t_end)
+
+
+def _loop_state(
+    system: System, n_state: int, n_events: int, n_snapshots: int, sectors: int
+) -> loop.LoopState:
+    nc = system.clearance_body.shape[0]
+    return loop.LoopState(
+        counters=np.zeros(N_COUNTERS, dtype=np.int64),
+        max_violation=np.zeros(1),
+        **{name: np.zeros(n_state) for name in loop.LoopState._fields[2:8]},
+        event_prev=np.zeros(n_events),
+        event_time=np.zeros(EVENT_CAPACITY),
+        event_index=np.zeros(EVENT_CAPACITY, dtype=np.int64),
+        event_rising=np.zeros(EVENT_CAPACITY, dtype=np.int64),
+        y_cut=np.zeros(n_state),
+        contact_totals=np.zeros((nc, N_TOTALS)),
+        impact_time=np.zeros(EVENT_CAPACITY),
+        impact_joint=np.zeros(EVENT_CAPACITY, dtype=np.int64),
+        impact_info=np.zeros((EVENT_CAPACITY, 3)),
+        wear_snapshots=np.zeros((n_snapshots, nc, 2, sectors)),
+    )
 
 
 def simulate(model: Model, *, progress: Progress | None = None) -> Results:
@@ -57,7 +94,7 @@ def simulate(model: Model, *, progress: Progress | None = None) -> Results:
     """
     solver = model.solver
     system = build_system(model)
-    assembly = assemble(model, system)
+    assembly = assemble(model, build_system(model, ideal=True))  # journals centred
     n_state = assembly.y0.shape[0]
     output_times = _output_times(solver.t_end, solver.output_interval)
     ctl = loop.Control(
@@ -70,18 +107,14 @@ def simulate(model: Model, *, progress: Progress | None = None) -> Results:
         max_steps=solver.max_steps,
         output_times=output_times,
         rows_per_step=math.ceil(solver.max_step / solver.output_interval) + 2,
-    )
-    n_events = len(model.events)
-    ls = loop.LoopState(
-        counters=np.zeros(N_COUNTERS, dtype=np.int64),
-        max_violation=np.zeros(1),
-        **{name: np.zeros(n_state) for name in loop.LoopState._fields[2:8]},
-        event_prev=np.zeros(n_events),
-        event_time=np.zeros(EVENT_CAPACITY),
-        event_index=np.zeros(EVENT_CAPACITY, dtype=np.int64),
-        event_rising=np.zeros(EVENT_CAPACITY, dtype=np.int64),
+        snapshot_times=_snapshot_times(solver.t_end, solver.wear_snapshot_interval),
     )
     dp, ab, wk = make_dopri5_state(n_state), make_abm_state(n_state), make_work(system)
+    ls = _loop_state(
+        system, n_state, len(model.events), ctl.snapshot_times.shape[0], wk.wear.shape[2]
+    )
+    joint_names = clearance_joint_names(model)
+    impacts: list[tuple] = []
     columns = column_names(model)
     buffer = np.zeros((max(ctl.rows_per_step * 4, 1024), len(columns)))
     blocks: list[np.ndarray] = []
@@ -107,6 +140,11 @@ def simulate(model: Model, *, progress: Progress | None = None) -> Results:
                 direction = "rising" if ls.event_rising[i] else "falling"
                 events.append((ls.event_time[i], model.events[ls.event_index[i]].name, direction))
             ls.counters[Counter.EVENTS] = 0
+            impacts += impact_rows(
+                joint_names, ls.impact_time, ls.impact_joint, ls.impact_info,
+                ls.counters[Counter.IMPACTS],
+            )  # fmt: skip
+            ls.counters[Counter.IMPACTS] = 0
             t_now = loop.current_time(ctl, dp, ab)
             if progress is not None:
                 progress(t_now, solver.t_end)
@@ -120,18 +158,19 @@ def simulate(model: Model, *, progress: Progress | None = None) -> Results:
                     rate = (t_now - t_before) / elapsed
                     chunk = min(max(rate * CHUNK_WALL_S, 1e-9 * solver.t_end), 10 * chunk)
     wall = time.perf_counter() - wall_start
+    t_reached = float(loop.current_time(ctl, dp, ab))
 
     data = np.concatenate(blocks) if blocks else np.zeros((0, len(columns)))
     stats = {
         "simulation_wall_s": wall,
-        "t_reached": float(loop.current_time(ctl, dp, ab)),
+        "t_reached": t_reached,
         "accepted_steps": int(ls.counters[Counter.ACCEPTED]),
         "rejected_steps": int(ls.counters[Counter.REJECTED]),
         "rhs_evaluations": int(ls.counters[Counter.RHS_EVALS]),
         "min_step_hits": int(ls.counters[Counter.MIN_STEP_HITS]),
         "max_constraint_violation": float(ls.max_violation[0]),
         "assembly_iterations": assembly.iterations,
-        "degrees_of_freedom": assembly.dof,
+        "degrees_of_freedom": assembly.dof + 2 * len(joint_names),
     }
     summary = {
         "jointwear_version": __version__,
@@ -141,9 +180,16 @@ def simulate(model: Model, *, progress: Progress | None = None) -> Results:
         "settings": model.solver.model_dump(mode="json"),
         "stats": stats,
     }
+    if joint_names:
+        summary["clearance_joints"] = joint_summaries(model, ls.contact_totals, wk.wear, t_reached)
     return Results(
         model=model,
         timeseries=pd.DataFrame(data, columns=columns),
         events=pd.DataFrame(events, columns=["time", "event", "direction"]),
         summary=summary,
+        wear=wear_table(model, wk.wear),
+        wear_snapshots=snapshot_table(
+            model, ctl.snapshot_times, ls.wear_snapshots, int(ls.counters[Counter.SNAPSHOTS])
+        ),
+        impacts=pd.DataFrame(impacts, columns=IMPACT_COLUMNS),
     )

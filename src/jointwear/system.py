@@ -12,12 +12,22 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import NDArray
 
+from .kernels import joint_contact as jc
 from .kernels.codes import DriverKind, EventDirection, FunctionKind
+from .kernels.joint_contact import N_CONTACT, N_LAW, N_PARAM
 from .model import Model
+from .model_clearance import (
+    FRICTION_LAWS,
+    NORMAL_LAWS,
+    WEAR_DISTRIBUTIONS,
+    WEAR_LAWS,
+    Clearance,
+)
 
 GROUND = -1
 MAX_COEFFICIENTS = 8
 BODY_COLUMNS = ("x", "y", "phi", "vx", "vy", "omega", "ax", "ay", "alpha")
+CLEARANCE_COLUMNS = ("fx", "fy", "ex", "ey", "delta", "fn", "ft")
 
 
 class System(NamedTuple):
@@ -48,12 +58,21 @@ class System(NamedTuple):
     event_coordinate: NDArray[np.int64]  # (ne,) 0 x, 1 y, 2 phi
     event_value: NDArray[np.float64]  # (ne,)
     event_direction: NDArray[np.int64]  # (ne,) EventDirection
+    clearance_body: NDArray[np.int64]  # (nc, 2) bearing body, journal body
+    clearance_point: NDArray[np.float64]  # (nc, 2, 2) bearing and journal centres, local [m]
+    clearance_law: NDArray[np.int64]  # (nc, N_LAW) law codes and options, kernels.joint_contact
+    clearance_param: NDArray[np.float64]  # (nc, N_PARAM) SI parameters, kernels.joint_contact
+    clearance_sectors: NDArray[np.int64]  # (nc,) sectors of each surface
     baumgarte_alpha: float  # [1/s]
     baumgarte_beta: float  # [1/s]
 
 
 class Work(NamedTuple):
-    """Scratch arrays of one right-hand-side evaluation (m constraint rows, n coordinates)."""
+    """Mutable arrays of a run (m constraint rows, n coordinates, nc clearance joints).
+
+    Scratch of one right-hand-side evaluation, and the clearance joints' contact state, which
+    the loop updates between steps (``kernels.contact_steps``).
+    """
 
     g: NDArray[np.float64]  # (n,) generalised applied forces
     phi: NDArray[np.float64]  # (m,)
@@ -63,12 +82,18 @@ class Work(NamedTuple):
     b: NDArray[np.float64]  # (m,) right side of the Schur system
     schur: NDArray[np.float64]  # (m, m)
     lam: NDArray[np.float64]  # (m,) Lagrange multipliers
+    contact: NDArray[np.float64]  # (nc, N_CONTACT) last contact evaluation, joint_contact.C_*
+    contact_on: NDArray[np.int64]  # (nc,) 1 while a contact period lasts
+    impact_speed: NDArray[np.float64]  # (nc,) penetration rate at the period's onset [m/s]
+    wear: NDArray[np.float64]  # (nc, 2, max sectors) wear depth of bearing, journal [m]
 
 
 def make_work(system: System) -> Work:
-    """Allocate the scratch arrays for ``system``."""
+    """Allocate the arrays of a run of ``system``, without contact and wear."""
     n = system.inv_mass.shape[0]
     m = constraint_count(system)
+    nc = system.clearance_body.shape[0]
+    sectors = int(system.clearance_sectors.max(initial=1))
     return Work(
         g=np.zeros(n),
         phi=np.zeros(m),
@@ -78,6 +103,10 @@ def make_work(system: System) -> Work:
         b=np.zeros(m),
         schur=np.zeros((m, m)),
         lam=np.zeros(m),
+        contact=np.zeros((nc, N_CONTACT)),
+        contact_on=np.zeros(nc, dtype=np.int64),
+        impact_speed=np.zeros(nc),
+        wear=np.zeros((nc, 2, sectors)),
     )
 
 
@@ -93,9 +122,16 @@ def column_names(model: Model) -> list[str]:
         names += [f"{c}_{body.name}" for c in BODY_COLUMNS]
     for driver in model.drivers:
         names.append(f"{'torque' if driver.type == 'angle' else 'force'}_{driver.name}")
-    for joint in model.joints:
+    ideal = [j for j in model.joints if not has_clearance(j)]
+    clearance = [j for j in model.joints if has_clearance(j)]
+    for joint in ideal:
         names += [f"{joint.name}_fx", f"{joint.name}_fy"]
-    return [*names, "energy_kinetic", "energy_potential", "constraint_violation"]
+    for joint in clearance:
+        names += [f"{joint.name}_{c}" for c in CLEARANCE_COLUMNS]
+    names += ["energy_kinetic", "energy_potential"]
+    if clearance:
+        names.append("energy_contact")
+    return [*names, "constraint_violation"]
 
 
 class _Functions:
@@ -131,8 +167,60 @@ def _table(rows: list, shape: tuple[int, ...], dtype: type) -> NDArray:
     return np.array(rows, dtype=dtype).reshape((len(rows), *shape))
 
 
-def build_system(model: Model) -> System:
-    """Build the kernel arrays of ``model`` (validated, SI)."""
+def _friction_parameters(clearance: Clearance) -> list[float]:
+    """(p0, p1, p2) of the friction law, as ``kernels.friction.tangential_force`` reads them."""
+    if clearance.friction_law == "ambrosio":
+        return [clearance.no_friction_speed, clearance.full_friction_speed, 0.0]
+    if clearance.friction_law == "coulomb":
+        return [clearance.regularisation_speed, 0.0, 0.0]
+    return [
+        clearance.static_friction_coefficient,
+        clearance.stiction_speed,
+        clearance.transition_speed,
+    ]
+
+
+def _clearance_row(clearance: Clearance) -> tuple[list[int], NDArray[np.float64]]:
+    """The law codes and the parameter row of one clearance joint."""
+    law = [0] * N_LAW
+    law[jc.L_NORMAL] = int(NORMAL_LAWS[clearance.normal_law])
+    law[jc.L_FRICTION] = int(FRICTION_LAWS[clearance.friction_law])
+    law[jc.L_WEAR] = int(WEAR_LAWS[clearance.wear_law])
+    law[jc.L_PEAK] = int(WEAR_DISTRIBUTIONS[clearance.wear_distribution])
+    law[jc.L_FEEDBACK] = int(clearance.wear_feedback)
+    param = np.zeros(N_PARAM)
+    param[jc.P_RB] = clearance.bearing_radius
+    param[jc.P_RJ] = clearance.journal_radius
+    param[jc.P_C] = clearance.radial_clearance
+    param[jc.P_K] = clearance.stiffness
+    param[jc.P_EXP] = clearance.exponent
+    param[jc.P_CE] = clearance.restitution_coefficient or 1.0
+    param[jc.P_CF] = clearance.friction_coefficient
+    param[[jc.P_F0, jc.P_F1, jc.P_F2]] = _friction_parameters(clearance)
+    if clearance.wear_law == "reye":
+        param[jc.P_WEAR] = clearance.shear_strength
+    else:
+        param[jc.P_WEAR] = clearance.archard_coefficient
+    param[jc.P_SHARE] = clearance.journal_wear_share
+    param[jc.P_WIDTH] = clearance.width
+    param[jc.P_RSTAR] = clearance.relative_radius
+    param[jc.P_ESTAR] = clearance.contact_modulus
+    param[jc.P_MIN_SPEED] = clearance.min_impact_speed
+    param[jc.P_TOL] = clearance.contact_tolerance
+    return law, param
+
+
+def has_clearance(joint: object) -> bool:
+    """Whether a model joint is a clearance joint."""
+    return getattr(joint, "clearance", None) is not None
+
+
+def build_system(model: Model, *, ideal: bool = False) -> System:
+    """Build the kernel arrays of ``model`` (validated, SI).
+
+    Clearance joints become rows of the clearance table; with ``ideal`` they are ideal
+    revolute joints instead (the assembly's "journal centred" mechanism, SPEC sec. 1).
+    """
     index = {b.name: i for i, b in enumerate(model.bodies)}
     index["ground"] = GROUND
     pose = {b.name: (b.position[0], b.position[1], b.angle) for b in model.bodies}
@@ -149,9 +237,18 @@ def build_system(model: Model) -> System:
 
     functions = _Functions()
     joints = {"kind": [], "body": [], "point": [], "axis": [], "angle0": [], "row": []}
+    clear = {"body": [], "point": [], "law": [], "param": [], "sectors": []}
     row = 0
     for joint in model.joints:
         b1, b2 = joint.bodies
+        if has_clearance(joint) and not ideal:
+            law, param = _clearance_row(joint.clearance)
+            clear["body"].append([index[b1], index[b2]])
+            clear["point"].append([local(b1, joint.points[0]), local(b2, joint.points[1])])
+            clear["law"].append(law)
+            clear["param"].append(param)
+            clear["sectors"].append(joint.clearance.sectors)
+            continue
         joints["kind"].append(int(joint.kind))
         joints["body"].append([index[b1], index[b2]])
         joints["point"].append([local(b1, joint.points[0]), local(b2, joint.points[1])])
@@ -245,6 +342,11 @@ def build_system(model: Model) -> System:
         event_direction=_table(
             [int(EventDirection[e.direction.upper()]) for e in events], (), np.int64
         ),
+        clearance_body=_table(clear["body"], (2,), np.int64),
+        clearance_point=_table(clear["point"], (2, 2), np.float64),
+        clearance_law=_table(clear["law"], (N_LAW,), np.int64),
+        clearance_param=_table(clear["param"], (N_PARAM,), np.float64),
+        clearance_sectors=_table(clear["sectors"], (), np.int64),
         baumgarte_alpha=float(model.solver.baumgarte_alpha),
         baumgarte_beta=float(model.solver.baumgarte_beta),
     )
@@ -253,9 +355,5 @@ def build_system(model: Model) -> System:
 def initial_guess(model: Model) -> NDArray[np.float64]:
     """State guess (q, q') from the bodies' initial poses and velocities."""
     q = [v for b in model.bodies for v in (b.position[0], b.position[1], b.angle)]
-    qd = [
-        v
-        for b in model.bodies
-        for v in (b.velocity[0], b.velocity[1], b.angular_velocity)
-    ]
+    qd = [v for b in model.bodies for v in (b.velocity[0], b.velocity[1], b.angular_velocity)]
     return np.array(q + qd, dtype=float)

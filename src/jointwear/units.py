@@ -43,12 +43,13 @@ _KINDS: dict[str, _Kind] = {
     "[force] * [time] / [length]": _Kind("damping coefficient", "5 N*s/m"),
     "[force] * [length] * [time]": _Kind("rotational damping coefficient", "0.1 N*m*s/rad"),
     "[pressure]": _Kind("pressure", "207 GPa"),
+    "1/[pressure]": _Kind("wear coefficient", "8e-14 1/Pa"),
 }
 _NOUNS = {ureg.get_dimensionality(key): kind.noun for key, kind in reversed(_KINDS.items())}
 
 _NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
 _UNIT = r"[^\W\d]\w*(?:\s*(?:\^|\*\*)\s*-?\d+)?"
-_QUANTITY = re.compile(rf"\s*({_NUMBER})\s*({_UNIT}(?:\s*[*/ ]\s*{_UNIT})*)?\s*")
+_QUANTITY = re.compile(rf"\s*({_NUMBER})\s*((?:1\s*/\s*)?{_UNIT}(?:\s*[*/ ]\s*{_UNIT})*)?\s*")
 
 
 def _article(noun: str) -> str:
@@ -150,6 +151,7 @@ Damping = Annotated[float, _quantity("[force] * [time] / [length]")]
 RotationalStiffness = Annotated[float, _quantity("[length] * [force]")]
 RotationalDamping = Annotated[float, _quantity("[force] * [length] * [time]")]
 Pressure = Annotated[float, _quantity("[pressure]")]
+WearCoefficient = Annotated[float, _quantity("1/[pressure]")]
 
 Vector2 = tuple[Length, Length]
 Velocity2 = tuple[Speed, Speed]

@@ -72,6 +72,8 @@ class Counter(IntEnum):
     MIN_STEP_HITS = 3
     OUTPUT_ROWS = 4
     EVENTS = 5
+    IMPACTS = 6  # contact onsets logged in this chunk
+    SNAPSHOTS = 7  # wear snapshots taken so far
 
 
 N_COUNTERS = len(Counter)

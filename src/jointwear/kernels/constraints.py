@@ -115,8 +115,17 @@ def evaluate_constraints(t, q, qd, sys, phi, cq, gamma, phi_t):
         else:
             jt = sys.driver_joint[d]
             line_projection(
-                q, qd, sys.joint_body[jt, 0], sys.joint_body[jt, 1], sys.joint_point[jt],
-                sys.joint_axis[jt, 0], sys.joint_axis[jt, 1], r, phi, cq, gamma,
+                q,
+                qd,
+                sys.joint_body[jt, 0],
+                sys.joint_body[jt, 1],
+                sys.joint_point[jt],
+                sys.joint_axis[jt, 0],
+                sys.joint_axis[jt, 1],
+                r,
+                phi,
+                cq,
+                gamma,
             )
             phi[r] -= f
             gamma[r] += fdd

@@ -9,7 +9,8 @@
 
 [[M, Phi_q^T], [Phi_q, 0]] [q''; lam] = [g; gamma - 2 alpha Phi' - beta^2 Phi] is solved by
 its Schur complement, M being diagonal: (Phi_q M^-1 Phi_q^T) lam = Phi_q M^-1 g - gamma_s,
-then q'' = M^-1 (g - Phi_q^T lam). Baumgarte (1972), Nikravesh (1988) sec. 13.
+then q'' = M^-1 (g - Phi_q^T lam). Baumgarte (1972), Nikravesh (1988) sec. 13. The
+clearance joints' contact forces are part of g (``kernels.joint_contact``).
 """
 
 import math
@@ -18,6 +19,7 @@ from numba import njit
 
 from .constraints import evaluate_constraints
 from .forces import applied_forces
+from .joint_contact import contact_forces
 from .linalg import cholesky_solve
 
 
@@ -30,6 +32,7 @@ def rhs(t, y, sys, wk, ydot):
     qd = y[n:]
     g = wk.g
     applied_forces(t, q, qd, sys, g)
+    contact_forces(q, qd, sys, wk, g)
     evaluate_constraints(t, q, qd, sys, wk.phi, wk.cq, wk.gamma, wk.phi_t)
     cq = wk.cq
     a2 = 2.0 * sys.baumgarte_alpha

@@ -7,6 +7,12 @@ in the arrays passed in, so a chunk can stop and the next one goes on exactly wh
 
 Minimum step (SPEC sec. 2): when the error test fails at ``min_step`` the step is accepted
 anyway and counted in ``Counter.MIN_STEP_HITS``.
+
+Clearance joints (``kernels.contact_steps``): when a step ends with a joint in free flight
+penetrating past the contact tolerance, the onset is located on the dense output (to within
+the tolerance in penetration), the step is cut there, the contact period begins with the
+penetration rate of that instant, and the integrator restarts from it. After every accepted
+step the wear of the step is added to the surfaces.
 """
 
 import math
@@ -17,13 +23,16 @@ from numba import njit
 
 from . import abm, dopri5
 from .codes import Counter, EventDirection, Method, Status
+from .contact_steps import accumulate_step, begin_periods, penetration_excess, starting_joint
 from .dynamics import constraint_norm, rhs
+from .joint_contact import P_TOL
 from .outputs import write_row
 
 ACCEPTED = 0
 REJECTED = 1
 EVENT_TIME_TOLERANCE = 1e-13  # relative bracket width at which a crossing is located [-]
 MAX_EVENT_ITERATIONS = 100
+ABM_RESTART_FRACTION = 0.25  # first step after a contact onset, of the step cut there (order 1)
 
 
 class Control(NamedTuple):
@@ -38,6 +47,7 @@ class Control(NamedTuple):
     max_steps: int
     output_times: np.ndarray  # (rows,) times of the output rows [s], increasing
     rows_per_step: int  # most rows one step can produce (buffer reserve)
+    snapshot_times: np.ndarray  # (ns,) times of the wear snapshots [s], increasing
 
 
 class LoopState(NamedTuple):
@@ -55,6 +65,12 @@ class LoopState(NamedTuple):
     event_time: np.ndarray  # (cap,) crossings logged during this chunk [s]
     event_index: np.ndarray  # (cap,) int64 event number
     event_rising: np.ndarray  # (cap,) int64 1 rising, 0 falling
+    y_cut: np.ndarray  # (N,) state where a step is cut at a contact onset
+    contact_totals: np.ndarray  # (nc, N_TOTALS) per clearance joint, contact_steps.T_*
+    impact_time: np.ndarray  # (cap,) contact onsets logged during this chunk [s]
+    impact_joint: np.ndarray  # (cap,) int64 clearance joint
+    impact_info: np.ndarray  # (cap, 3) contact_steps.I_* of each onset
+    wear_snapshots: np.ndarray  # (ns, nc, 2, max sectors) wear depths at snapshot_times [m]
 
 
 @njit(cache=True)
@@ -93,6 +109,7 @@ def event_value(sys, e, y):
 @njit(cache=True)
 def start(sys, ctl, ls, dp, ab, wk, t0, y0, h0):
     """Begin a run at (t0, y0) with first step h0 [s]; returns False if the solve fails."""
+    begin_periods(sys, ls, wk, t0, y0)
     ok = rhs(t0, y0, sys, wk, ls.yp_scratch)
     ls.counters[Counter.RHS_EVALS] += 1
     dopri5.dopri5_start(dp, t0, y0, ls.yp_scratch, h0)
@@ -161,16 +178,29 @@ def _step_abm(sys, ctl, ls, ab, wk, t_stop):
 
 
 @njit(cache=True)
-def _locate(sys, ctl, ls, dp, ab, e, ta, ga, tb, gb):
-    """Crossing time of event e in [ta, tb] by the Illinois method on the dense output."""
+def _crossing_value(sys, wk, e, y):
+    """Event function e: user events first, then one per clearance joint (contact onset)."""
+    n_user = sys.event_body.shape[0]
+    if e < n_user:
+        return event_value(sys, e, y)
+    return penetration_excess(sys, wk, e - n_user, y)
+
+
+@njit(cache=True)
+def _locate(sys, ctl, ls, dp, ab, wk, e, ta, ga, tb, gb, g_tol):
+    """Crossing time of event e in [ta, tb] by the Illinois method on the dense output.
+
+    Stops when the bracket is at the time tolerance or abs(g(tb)) <= g_tol; returns tb, the
+    end on the far side of the crossing.
+    """
     side = 0
     for _ in range(MAX_EVENT_ITERATIONS):
-        if tb - ta <= EVENT_TIME_TOLERANCE * max(1.0, abs(tb)):
+        if tb - ta <= EVENT_TIME_TOLERANCE * max(1.0, abs(tb)) or abs(gb) <= g_tol:
             break
         tc = tb - gb * (tb - ta) / (gb - ga)
         tc = min(max(tc, ta), tb)
         interpolate(ctl, dp, ab, tc, ls.y_scratch)
-        gc = event_value(sys, e, ls.y_scratch)
+        gc = _crossing_value(sys, wk, e, ls.y_scratch)
         if gc == 0.0:
             return tc
         if (gc < 0.0) == (gb < 0.0):
@@ -187,7 +217,7 @@ def _locate(sys, ctl, ls, dp, ab, e, ta, ga, tb, gb):
 
 
 @njit(cache=True)
-def _log_events(sys, ctl, ls, dp, ab, t_old, t_new, y_new):
+def _log_events(sys, ctl, ls, dp, ab, wk, t_old, t_new, y_new):
     for e in range(ls.event_prev.shape[0]):
         g0 = ls.event_prev[e]
         g1 = event_value(sys, e, y_new)
@@ -199,40 +229,114 @@ def _log_events(sys, ctl, ls, dp, ab, t_old, t_new, y_new):
             falling and wanted != EventDirection.RISING
         ):
             slot = ls.counters[Counter.EVENTS]
-            ls.event_time[slot] = _locate(sys, ctl, ls, dp, ab, e, t_old, g0, t_new, g1)
+            ls.event_time[slot] = _locate(sys, ctl, ls, dp, ab, wk, e, t_old, g0, t_new, g1, 0.0)
             ls.event_index[slot] = e
             ls.event_rising[slot] = 1 if rising else 0
             ls.counters[Counter.EVENTS] += 1
 
 
 @njit(cache=True)
+def _contact_onset(sys, ctl, ls, dp, ab, wk, t_old, t_new, y_new):
+    """Earliest contact onset in the step just accepted [s], or t_new if there is none.
+
+    A clearance joint in free flight whose penetration passes the tolerance at the step end
+    has its onset located to within the tolerance in penetration.
+    """
+    if starting_joint(sys, wk, y_new) < 0:
+        return t_new
+    n_user = sys.event_body.shape[0]
+    t_first = t_new
+    interpolate(ctl, dp, ab, t_old, ls.y_cut)
+    for k in range(sys.clearance_body.shape[0]):
+        if wk.contact_on[k]:
+            continue
+        g1 = penetration_excess(sys, wk, k, y_new)
+        g0 = penetration_excess(sys, wk, k, ls.y_cut)
+        if g1 > 0.0 and g0 <= 0.0:
+            tol = sys.clearance_param[k, P_TOL]
+            t_hit = _locate(sys, ctl, ls, dp, ab, wk, n_user + k, t_old, g0, t_new, g1, tol)
+            t_first = min(t_first, t_hit)
+    return t_first
+
+
+@njit(cache=True)
+def _write_rows(sys, ctl, ls, dp, ab, wk, out, rows, t):
+    """Write the output rows due by time t [s]; return (row count, False if singular)."""
+    k = ls.counters[Counter.OUTPUT_ROWS]
+    while k < ctl.output_times.shape[0] and ctl.output_times[k] <= t:
+        interpolate(ctl, dp, ab, ctl.output_times[k], ls.y_scratch)
+        if not write_row(ctl.output_times[k], ls.y_scratch, sys, wk, ls.yp_scratch, out[rows]):
+            return rows, False
+        rows += 1
+        k += 1
+        ls.counters[Counter.OUTPUT_ROWS] = k
+    return rows, True
+
+
+@njit(cache=True)
+def _after_step(sys, ctl, ls, dp, ab, wk, out, rows, t_old, h):
+    """Contact onsets, wear and events of the step just accepted; return (rows, False if singular).
+
+    At an onset the step is cut there: the rows and events up to it are written from this
+    step's dense output, and the integrator restarts from the cut.
+    """
+    t_new = current_time(ctl, dp, ab)
+    y_new = current_state(ctl, dp, ab)
+    nc = sys.clearance_body.shape[0]
+    t_cut = _contact_onset(sys, ctl, ls, dp, ab, wk, t_old, t_new, y_new) if nc else t_new
+    if t_cut < t_new:
+        interpolate(ctl, dp, ab, t_cut, ls.y_cut)
+    else:
+        ls.y_cut[:] = y_new
+    if nc:
+        interpolate(ctl, dp, ab, 0.5 * (t_old + t_cut), ls.y_scratch)
+        accumulate_step(sys, ctl, ls, wk, t_old, t_cut, ls.y_scratch)
+    _log_events(sys, ctl, ls, dp, ab, wk, t_old, t_cut, ls.y_cut)
+    if t_cut == t_new:
+        if nc:
+            begin_periods(sys, ls, wk, t_new, y_new)  # only closes periods here
+        return rows, True
+    rows, ok = _write_rows(sys, ctl, ls, dp, ab, wk, out, rows, t_cut)
+    if not ok:
+        return rows, False
+    begin_periods(sys, ls, wk, t_cut, ls.y_cut)
+    ls.counters[Counter.RHS_EVALS] += 1
+    if not rhs(t_cut, ls.y_cut, sys, wk, ls.yp_scratch):
+        return rows, False
+    if ctl.method == Method.DOPRI5:
+        dopri5.dopri5_start(dp, t_cut, ls.y_cut, ls.yp_scratch, h)
+    else:
+        h_abm = max(ABM_RESTART_FRACTION * h, ctl.min_step)
+        abm.abm_start(ab, t_cut, ls.y_cut, ls.yp_scratch, h_abm)
+    return rows, True
+
+
+@njit(cache=True)
 def advance(sys, ctl, ls, dp, ab, wk, out, t_stop, step_stop):
     """Integrate past t_stop [s] (or to the end); return (Status, rows written into out).
 
-    The chunk also hands back once the step count (accepted + rejected) reaches step_stop.
+    The chunk also hands back once the step count (accepted + rejected) reaches step_stop,
+    and before its event, impact or output buffers could overflow.
 
     Steps are never shortened to land on t_stop, only on the end time, so the solution does
     not depend on how the run is cut into chunks.
     """
     rows = 0
-    n_out = ctl.output_times.shape[0]
     n_events = ls.event_prev.shape[0]
+    nc = sys.clearance_body.shape[0]
     while True:
         t = current_time(ctl, dp, ab)
-        k = ls.counters[Counter.OUTPUT_ROWS]
-        while k < n_out and ctl.output_times[k] <= t:
-            interpolate(ctl, dp, ab, ctl.output_times[k], ls.y_scratch)
-            if not write_row(ctl.output_times[k], ls.y_scratch, sys, wk, ls.yp_scratch, out[rows]):
-                return Status.SINGULAR, rows
-            rows += 1
-            k += 1
-            ls.counters[Counter.OUTPUT_ROWS] = k
+        rows, ok = _write_rows(sys, ctl, ls, dp, ab, wk, out, rows, t)
+        if not ok:
+            return Status.SINGULAR, rows
         if t >= ctl.t_end:
             return Status.SUCCESS, rows
         if t >= t_stop:
             return Status.RUNNING, rows
         full = rows + ctl.rows_per_step > out.shape[0]
-        if full or ls.counters[Counter.EVENTS] + n_events > ls.event_time.shape[0]:
+        full |= ls.counters[Counter.EVENTS] + n_events > ls.event_time.shape[0]
+        full |= ls.counters[Counter.IMPACTS] + nc > ls.impact_time.shape[0]
+        if full:
             return Status.RUNNING, rows
         steps = ls.counters[Counter.ACCEPTED] + ls.counters[Counter.REJECTED]
         if steps >= ctl.max_steps:
@@ -254,4 +358,7 @@ def advance(sys, ctl, ls, dp, ab, wk, out, t_stop, step_stop):
         for i in range(y_new.shape[0]):
             if not math.isfinite(y_new[i]):
                 return Status.NON_FINITE, rows
-        _log_events(sys, ctl, ls, dp, ab, t, current_time(ctl, dp, ab), y_new)
+        h = current_time(ctl, dp, ab) - t
+        rows, ok = _after_step(sys, ctl, ls, dp, ab, wk, out, rows, t, h)
+        if not ok:
+            return Status.SINGULAR, rows

@@ -2,14 +2,19 @@
 
 Row layout (``system.column_names`` gives the names): time; per body x, y, phi, vx, vy,
 omega, ax, ay, alpha; per driver the generalised force it applies (-lambda of its row);
-per joint the reaction force (fx, fy) on its second body; kinetic and potential energy; the
-2-norm of the position constraints.
+per ideal joint the reaction force (fx, fy) on its second body; per clearance joint the
+contact force (fx, fy) on the journal, the eccentricity (ex, ey), the penetration, the normal
+and the friction force; kinetic and potential energy; with clearance joints, the elastic
+energy of their contacts; the 2-norm of the position constraints.
 """
 
 from numba import njit
 
 from .dynamics import constraint_norm, rhs
 from .forces import potential_energy
+from .joint_contact import C_DELTA, C_EX, C_EY, C_FN, C_FT, C_FX, C_FY, contact_energy
+
+CLEARANCE_OUTPUTS = (C_FX, C_FY, C_EX, C_EY, C_DELTA, C_FN, C_FT)  # system.CLEARANCE_COLUMNS
 
 
 @njit(cache=True)
@@ -56,7 +61,16 @@ def write_row(t, y, sys, wk, ydot, row):
             else:  # action and reaction: the force on the ground is minus that on body i
                 row[c + k] = -_reaction(wk, sys, jt, sys.joint_body[jt, 0], k)
         c += 2
+    nc = sys.clearance_body.shape[0]
+    for k in range(nc):
+        for i in range(len(CLEARANCE_OUTPUTS)):
+            row[c + i] = wk.contact[k, CLEARANCE_OUTPUTS[i]]
+        c += len(CLEARANCE_OUTPUTS)
     row[c] = kinetic_energy(y[n:], sys)
     row[c + 1] = potential_energy(y[:n], sys)
-    row[c + 2] = constraint_norm(wk)
+    c += 2
+    if nc > 0:
+        row[c] = contact_energy(sys, wk)
+        c += 1
+    row[c] = constraint_norm(wk)
     return ok

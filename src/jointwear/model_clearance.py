@@ -1,0 +1,182 @@
+"""Schema of a revolute joint's ``[joints.clearance]`` table (docs/model-format.md).
+
+The joint's first body carries the bearing (the hole, centred on the joint's first point),
+the second the journal (the pin, centred on its second point). Laws are chosen by name from
+the kernels' codes; each law's parameters are separate keys, and a key that the chosen law
+does not use is refused, so a model never carries a setting that silently does nothing.
+"""
+
+from typing import Annotated
+
+from annotated_types import Ge, Gt, Le
+from pydantic import model_validator
+
+from jointwear.kernels.codes import FrictionLaw, NormalLaw, WearLaw
+from jointwear.kernels.contact import (
+    effective_modulus,
+    effective_radius,
+    internal_cylinder_stiffness,
+)
+from jointwear.kernels.wear import hertz_line_contact
+from jointwear.model_tables import Number, Table, one_of
+from jointwear.units import Length, Pressure, Speed, WearCoefficient
+
+NORMAL_LAWS = {law.name.lower(): law for law in NormalLaw}
+FRICTION_LAWS = {law.name.lower(): law for law in FrictionLaw}
+WEAR_LAWS = {law.name.lower(): law for law in WearLaw}
+WEAR_DISTRIBUTIONS = {"hertz": False, "peak": True}  # value: paper-style single sector
+
+PositiveLength = Annotated[Length, Gt(0)]
+Modulus = Annotated[Pressure, Gt(0)]
+Poisson = Annotated[Number, Ge(0), Le(0.5)]
+PositiveSpeed = Annotated[Speed, Gt(0)]
+
+# Keys that only some laws use: (law key, {law name: keys it uses}).
+_LAW_KEYS = {
+    "friction_law": {
+        "ambrosio": ("no_friction_speed", "full_friction_speed"),
+        "coulomb": ("regularisation_speed",),
+        "stick_slip": ("static_friction_coefficient", "stiction_speed", "transition_speed"),
+    },
+    "wear_law": {
+        "archard": ("wear_coefficient", "dimensionless_wear_coefficient", "hardness"),
+        "reye": ("shear_strength",),
+    },
+}
+
+
+class Clearance(Table):
+    """A revolute joint with clearance: journal in bearing, contact, friction and wear (SI)."""
+
+    bearing_radius: PositiveLength
+    journal_radius: PositiveLength
+    width: PositiveLength
+    youngs_modulus: Modulus | tuple[Modulus, Modulus]  # both, or [bearing, journal]
+    poisson_ratio: Poisson | tuple[Poisson, Poisson]
+    normal_law: Annotated[str, one_of(NORMAL_LAWS, "normal law")] = "lankarani_nikravesh"
+    restitution_coefficient: Annotated[Number, Gt(0), Le(1)] | None = None
+    exponent: Annotated[Number, Gt(0)] = 1.5
+    contact_stiffness: Annotated[Number, Gt(0)] | None = None  # K [N/m^exponent]
+    min_impact_speed: PositiveSpeed = 1e-3
+    contact_tolerance: PositiveLength = 1e-10
+    friction_law: Annotated[str, one_of(FRICTION_LAWS, "friction law")] = "ambrosio"
+    friction_coefficient: Annotated[Number, Ge(0)]
+    no_friction_speed: Annotated[Speed, Ge(0)] = 1e-4
+    full_friction_speed: PositiveSpeed = 1e-2
+    regularisation_speed: PositiveSpeed = 1e-4
+    static_friction_coefficient: Annotated[Number, Ge(0)] | None = None
+    stiction_speed: PositiveSpeed = 1e-4
+    transition_speed: PositiveSpeed = 1e-2
+    wear_law: Annotated[str, one_of(WEAR_LAWS, "wear law")] = "archard"
+    wear_coefficient: Annotated[WearCoefficient, Ge(0)] | None = None
+    dimensionless_wear_coefficient: Annotated[Number, Ge(0)] | None = None
+    hardness: Modulus | None = None
+    shear_strength: Modulus | None = None
+    journal_wear_share: Annotated[Number, Ge(0), Le(1)] = 0.5
+    wear_distribution: Annotated[str, one_of(WEAR_DISTRIBUTIONS, "wear distribution")] = "hertz"
+    wear_feedback: bool = True
+    sectors: Annotated[int, Ge(4), Le(100_000)] = 36
+
+    @model_validator(mode="after")
+    def _consistent(self) -> "Clearance":
+        problems = [*self._unused_keys(), *self._missing_keys()]
+        if self.journal_radius >= self.bearing_radius:
+            problems.append(
+                f"journal_radius {self.journal_radius:g} m must be smaller than bearing_radius "
+                f"{self.bearing_radius:g} m (the radial clearance is their difference)"
+            )
+        ambrosio = self.friction_law == "ambrosio"
+        if ambrosio and self.full_friction_speed <= self.no_friction_speed:
+            problems.append("full_friction_speed must be larger than no_friction_speed")
+        if problems:
+            raise ValueError("; ".join(problems))
+        return self
+
+    def _unused_keys(self) -> list[str]:
+        lines = []  # a default value is not a setting (and model.json writes them all)
+        for law_key, users in _LAW_KEYS.items():
+            chosen = getattr(self, law_key)
+            for law, keys in users.items():
+                for key in keys:
+                    if getattr(self, key) != self.model_fields[key].default and law != chosen:
+                        lines.append(
+                            f"{key} is used by {law_key} '{law}' only, and this joint's "
+                            f"{law_key} is '{chosen}'; remove it or choose {law_key} = '{law}'"
+                        )
+        return lines
+
+    def _missing_keys(self) -> list[str]:
+        lines = []
+        if self.normal_law != "hertz" and self.restitution_coefficient is None:
+            lines.append(
+                f"normal_law '{self.normal_law}' needs restitution_coefficient (0 < c_e <= 1)"
+            )
+        if self.friction_law == "stick_slip" and self.static_friction_coefficient is None:
+            lines.append("friction_law 'stick_slip' needs static_friction_coefficient")
+        if self.wear_law == "reye" and self.shear_strength is None:
+            lines.append("wear_law 'reye' needs shear_strength (a pressure, e.g. '300 MPa')")
+        if self.wear_law == "archard":
+            by_hardness = (self.dimensionless_wear_coefficient, self.hardness)
+            if self.wear_coefficient is None and None in by_hardness:
+                lines.append(
+                    "wear_law 'archard' needs wear_coefficient (e.g. '8e-14 1/Pa'), or "
+                    "dimensionless_wear_coefficient together with hardness"
+                )
+            elif self.wear_coefficient is not None and by_hardness != (None, None):
+                lines.append(
+                    "give wear_coefficient, or dimensionless_wear_coefficient with hardness, "
+                    "not both"
+                )
+        return lines
+
+    def _pair(self, value: float | tuple[float, float]) -> tuple[float, float]:
+        return (value, value) if isinstance(value, float | int) else value
+
+    @property
+    def moduli(self) -> tuple[float, float]:
+        """Young's moduli of (bearing, journal) [Pa]."""
+        return self._pair(self.youngs_modulus)
+
+    @property
+    def poisson_ratios(self) -> tuple[float, float]:
+        """Poisson's ratios of (bearing, journal) [-]."""
+        return self._pair(self.poisson_ratio)
+
+    @property
+    def radial_clearance(self) -> float:
+        """Radial clearance c = R_B - R_J [m]."""
+        return self.bearing_radius - self.journal_radius
+
+    @property
+    def contact_modulus(self) -> float:
+        """E* [Pa] of the two materials."""
+        (e_b, e_j), (nu_b, nu_j) = self.moduli, self.poisson_ratios
+        return effective_modulus(e_b, nu_b, e_j, nu_j)
+
+    @property
+    def relative_radius(self) -> float:
+        """R* = R_B R_J / (R_B - R_J) [m]."""
+        return effective_radius(self.bearing_radius, self.journal_radius)
+
+    @property
+    def stiffness(self) -> float:
+        """K [N/m^exponent]: ``contact_stiffness`` if given, else the internal-cylinder formula."""
+        if self.contact_stiffness is not None:
+            return self.contact_stiffness
+        (e_b, e_j), (nu_b, nu_j) = self.moduli, self.poisson_ratios
+        return internal_cylinder_stiffness(
+            self.bearing_radius, self.journal_radius, e_b, nu_b, e_j, nu_j
+        )
+
+    @property
+    def archard_coefficient(self) -> float:
+        """Archard's dimensional k [1/Pa] (wear_coefficient, or K / H); 0 for Reye."""
+        if self.wear_law != "archard":
+            return 0.0
+        if self.wear_coefficient is not None:
+            return self.wear_coefficient
+        return self.dimensionless_wear_coefficient / self.hardness
+
+    def hertz_patch(self, force: float) -> tuple[float, float]:
+        """Half-width b [m] and peak pressure p_max [Pa] of the line contact under force [N]."""
+        return hertz_line_contact(force, self.relative_radius, self.contact_modulus, self.width)
