@@ -7,14 +7,16 @@ import jointwear as jw
 EXAMPLES = Path(__file__).parents[1] / "examples"
 
 
-def simulate_ok(path: Path, overrides: list[str]) -> jw.Results:
-    """Load a model with overrides, run it, and insist that it finished."""
-    res = jw.simulate(jw.load_model(path, overrides=overrides))
+def simulate_ok(path: Path, overrides: list[str], *, ideal: bool = False) -> jw.Results:
+    """Load a model with overrides (all joints ideal if asked), run it, insist it finished."""
+    model = jw.load_model(path, overrides=overrides)
+    res = jw.simulate(model.ideal() if ideal else model)
     assert res.status == "success", res.message
     return res
 
+
 # The paper four-bar's time-series columns, spelled out from the model's own names.
-FOURBAR_COLUMNS = [
+_FOURBAR_BODIES = [
     "time",
     *(
         f"{c}_{body}"
@@ -22,6 +24,9 @@ FOURBAR_COLUMNS = [
         for c in ("x", "y", "phi", "vx", "vy", "omega", "ax", "ay", "alpha")
     ),
     "torque_motor",
+]
+FOURBAR_IDEAL_COLUMNS = [
+    *_FOURBAR_BODIES,
     *(
         f"{joint}_{c}"
         for joint in ("ground_crank", "crank_coupler", "coupler_follower", "ground_follower")
@@ -29,5 +34,19 @@ FOURBAR_COLUMNS = [
     ),
     "energy_kinetic",
     "energy_potential",
+    "constraint_violation",
+]
+# As in the example file: coupler_follower has clearance; its columns follow the ideal joints'.
+FOURBAR_COLUMNS = [
+    *_FOURBAR_BODIES,
+    *(
+        f"{joint}_{c}"
+        for joint in ("ground_crank", "crank_coupler", "ground_follower")
+        for c in ("fx", "fy")
+    ),
+    *(f"coupler_follower_{c}" for c in ("fx", "fy", "ex", "ey", "delta", "fn", "ft")),
+    "energy_kinetic",
+    "energy_potential",
+    "energy_contact",
     "constraint_violation",
 ]

@@ -66,8 +66,8 @@ def test_contact_velocities_are_those_of_the_material_points(seed):
     local_j = rot(-q[5]) @ (pj - q[3:5])
     local_b = rot(-q[2]) @ (pb - q[0:2])
     eps = 1e-6
-    vj = (material_point(q + eps * qd, 1, local_j) - material_point(q - eps * qd, 1, local_j))
-    vb = (material_point(q + eps * qd, 0, local_b) - material_point(q - eps * qd, 0, local_b))
+    vj = material_point(q + eps * qd, 1, local_j) - material_point(q - eps * qd, 1, local_j)
+    vb = material_point(q + eps * qd, 0, local_b) - material_point(q - eps * qd, 0, local_b)
     relative = (vj - vb) / (2 * eps)
     delta_dot, v_t = contact_velocities(qd, 0, 1, *n, dex, dey, R_B, R_J)
     assert delta_dot == pytest.approx(n @ [dex, dey], abs=1e-12)

@@ -274,7 +274,11 @@ def test_check_fourbar_prints_dof_and_initial_pose():
     assert result.stderr == ""
     text = result.stdout
     assert "model 'flores2009_fourbar': valid" in text
-    assert "degrees of freedom: 1 (joints only), 0 with drivers" in text
+    assert (
+        "degrees of freedom: 3 (joints only), 2 with drivers, of which 2 from clearance joints"
+        in text
+    )
+    assert "contact stiffness K (n = 1.5)" in text and "1.06154e+11" in text  # Table 2 data
     assert re.search(r"assembled in \d+ Newton iterations, residual ", text)
     rows = {}
     for line in text.splitlines():

@@ -6,7 +6,6 @@ crank torque and joint reactions must match the independent answers of ``referen
 magnitude over the turn, for both integrators.
 """
 
-
 import numpy as np
 import pytest
 from references import (
@@ -40,7 +39,9 @@ def tight_runs():
     runs = {}
     for integrator in INTEGRATORS:
         res = simulate_ok(
-            EXAMPLES / "flores2009_fourbar.toml", [*TIGHT, f"solver.integrator={integrator}"]
+            EXAMPLES / "flores2009_fourbar.toml",
+            [*TIGHT, f"solver.integrator={integrator}"],
+            ideal=True,
         )
         df = res.timeseries
         # The run covers the whole turn (the last row is within one output interval of t_end).
@@ -133,6 +134,7 @@ def test_error_decreases_as_rtol_tightens(integrator):
                 f"solver.atol={atol}",
                 f"solver.integrator={integrator}",
             ],
+            ideal=True,
         ).timeseries
         ref = fourbar_states(df["time"].to_numpy())
         err = max(
@@ -152,7 +154,7 @@ def test_error_decreases_as_rtol_tightens(integrator):
 @pytest.mark.slow
 def test_constraint_violation_stays_bounded():
     path = EXAMPLES / "flores2009_fourbar.toml"
-    res = simulate_ok(path, [])  # the file as is: 1 s (25 turns), default tolerances
+    res = simulate_ok(path, [], ideal=True)  # the file as is: 1 s (25 turns), default tolerances
     df = res.timeseries
     violation = df["constraint_violation"].to_numpy()
     time = df["time"].to_numpy()
@@ -168,5 +170,7 @@ def test_constraint_violation_stays_bounded():
     assert fourth <= 1.25 * third + 1e-7, (third, fourth)
     # And the stabilisation is what bounds it: without it the drift is far larger (prototype:
     # 13 times at 1 s).
-    free = simulate_ok(path, ["solver.baumgarte_alpha=0.0", "solver.baumgarte_beta=0.0"])
+    free = simulate_ok(
+        path, ["solver.baumgarte_alpha=0.0", "solver.baumgarte_beta=0.0"], ideal=True
+    )
     assert violation.max() < 0.25 * free.timeseries["constraint_violation"].max()

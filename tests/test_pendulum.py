@@ -6,7 +6,6 @@ amplitude. Its exact period (elliptic integral, ``references.compound_pendulum_p
 dynamics, not just the linearisation. Undriven and undamped, it must conserve energy.
 """
 
-
 import numpy as np
 import pytest
 from references import compound_pendulum_period, mechanism_energy

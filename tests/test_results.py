@@ -15,6 +15,7 @@ from jointwear.kernels.codes import Status
 from jointwear.results import status_message
 
 FILES = ("summary.json", "model.json", "timeseries.csv", "timeseries.parquet", "events.csv")
+CLEARANCE_FILES = ("wear.csv", "wear_snapshots.csv", "impacts.csv")
 
 
 def simulate(name: str, overrides: list[str], **kwargs) -> jw.Results:
@@ -42,6 +43,14 @@ def assert_same_results(loaded: jw.Results, saved: jw.Results) -> None:
     pd.testing.assert_frame_equal(
         loaded.events, saved.events, check_exact=False, rtol=1e-11, atol=0.0
     )
+    for table in ("wear", "wear_snapshots", "impacts"):  # 12 significant digits in CSV
+        pd.testing.assert_frame_equal(
+            getattr(loaded, table),
+            getattr(saved, table),
+            check_exact=False,
+            rtol=1e-11,
+            check_dtype=not getattr(saved, table).empty,  # an empty CSV reads back as text
+        )
     assert loaded.summary == saved.summary
     assert loaded.model == saved.model
     assert loaded.status == saved.status
@@ -53,7 +62,8 @@ def test_save_then_load_gives_the_same_results(request, tmp_path, example):
     results = request.getfixturevalue(example)
     folder = results.save(tmp_path / "out")
     assert folder == tmp_path / "out"
-    assert sorted(p.name for p in folder.iterdir()) == sorted(FILES)
+    files = FILES + (CLEARANCE_FILES if example == "fourbar" else ())
+    assert sorted(p.name for p in folder.iterdir()) == sorted(files)
     assert_same_results(jw.load_results(folder), results)
 
 

@@ -20,14 +20,16 @@ from rich.table import Table
 
 from .assembly import assemble
 from .model import ModelError, load_model
+from .model_clearance import Clearance
 from .results import load_results
 from .run import run as run_model
-from .system import build_system
+from .system import build_system, has_clearance
 
 app = typer.Typer(add_completion=False, no_args_is_help=True, help=__doc__.splitlines()[0])
 err = Console(stderr=True)
 out = Console()
 PROGRESS_AFTER_S = 1.0  # show a progress bar only for runs longer than this
+HERTZ_REFERENCE_FORCES = (100.0, 1000.0)  # loads at which `check` shows the Hertz patch [N]
 
 ModelPath = Annotated[Path, typer.Argument(help="TOML model file.", show_default=False)]
 Overrides = Annotated[
@@ -105,16 +107,22 @@ def run(
 
 @app.command()
 def check(model: ModelPath, overrides: Overrides = None) -> None:
-    """Validate MODEL, assemble it and print its degrees of freedom and initial pose."""
+    """Validate MODEL, assemble it and print its degrees of freedom, initial pose and joints.
+
+    The pose is assembled with every journal centred in its bearing; for each clearance
+    joint the radial clearance, the contact stiffness K and the Hertz parameters follow.
+    """
     try:
         parsed = load_model(model, overrides or [])
-        assembly = assemble(parsed, build_system(parsed))
+        assembly = assemble(parsed, build_system(parsed, ideal=True))
     except ModelError as error:
         raise _fail(error) from None
     out.print(f"model '{parsed.name}': valid")
+    freed = 2 * sum(has_clearance(joint) for joint in parsed.joints)
     out.print(
-        f"degrees of freedom: {assembly.dof_without_drivers} (joints only), "
-        f"{assembly.dof} with drivers"
+        f"degrees of freedom: {assembly.dof_without_drivers + freed} (joints only), "
+        f"{assembly.dof + freed} with drivers"
+        + (f", of which {freed} from clearance joints" if freed else "")
     )
     out.print(
         f"assembled in {assembly.iterations} Newton iterations, residual {assembly.residual:.2e}"
@@ -128,6 +136,38 @@ def check(model: ModelPath, overrides: Overrides = None) -> None:
         vx, vy, w = assembly.y0[n + 3 * i : n + 3 * i + 3]
         table.add_row(body.name, *(f"{v:.6g}" for v in (x, y, math.degrees(phi), vx, vy, w)))
     out.print(table)
+    for joint in parsed.joints:
+        if has_clearance(joint):
+            out.print(_clearance_table(joint.name, joint.clearance))
+
+
+def _clearance_table(name: str, clearance: Clearance) -> Table:
+    """The derived contact and wear parameters of a clearance joint."""
+    table = Table(title=f"clearance joint '{name}'")
+    table.add_column("quantity")
+    table.add_column("value", justify="right")
+    table.add_column("unit")
+    rows = [
+        ("radial clearance c = R_B - R_J", clearance.radial_clearance * 1e3, "mm"),
+        (f"contact stiffness K (n = {clearance.exponent:g})", clearance.stiffness, "N/m^n"),
+        ("contact modulus E*", clearance.contact_modulus / 1e9, "GPa"),
+        ("relative radius R* = R_B R_J / c", clearance.relative_radius, "m"),
+    ]
+    for force in HERTZ_REFERENCE_FORCES:
+        b, p_max = clearance.hertz_patch(force)
+        rows.append((f"Hertz half-width b at {force:g} N", b * 1e3, "mm"))
+        rows.append((f"Hertz peak pressure at {force:g} N", p_max / 1e6, "MPa"))
+    rows.append((f"normal law: {clearance.normal_law}", clearance.restitution_coefficient, "c_e"))
+    rows.append((f"friction law: {clearance.friction_law}", clearance.friction_coefficient, "c_f"))
+    if clearance.wear_law == "archard":
+        rows.append(("wear law: archard, k", clearance.archard_coefficient, "1/Pa"))
+    else:
+        rows.append(("wear law: reye, shear strength", clearance.shear_strength / 1e6, "MPa"))
+    rows.append((f"sectors per surface ({clearance.wear_distribution})", clearance.sectors, ""))
+    for quantity, value, unit in rows:
+        shown = "-" if value is None else f"{value:.6g}"
+        table.add_row(escape(quantity), shown, escape(unit))
+    return table
 
 
 @app.command()

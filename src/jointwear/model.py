@@ -349,6 +349,21 @@ class Model(Table):
         """Return the joint called `name` (KeyError if there is none)."""
         return _named(self.joints, name)
 
+    @property
+    def has_clearance(self) -> bool:
+        """Whether any joint has clearance."""
+        return any(getattr(joint, "clearance", None) is not None for joint in self.joints)
+
+    def ideal(self) -> "Model":
+        """The same model with every clearance joint made ideal (journal centred)."""
+        joints = tuple(
+            joint.model_copy(update={"clearance": None})
+            if isinstance(joint, RevoluteJoint)
+            else joint
+            for joint in self.joints
+        )
+        return self.model_copy(update={"joints": joints})
+
     def point(self, body: str, name: str) -> tuple[float, float]:
         """Return point `name` of `body` [m]: global for ``"ground"``, else in the body frame."""
         points = self.ground.points if body == "ground" else self.body(body).points

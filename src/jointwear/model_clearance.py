@@ -98,7 +98,7 @@ class Clearance(Table):
             chosen = getattr(self, law_key)
             for law, keys in users.items():
                 for key in keys:
-                    if getattr(self, key) != self.model_fields[key].default and law != chosen:
+                    if getattr(self, key) != Clearance.model_fields[key].default and law != chosen:
                         lines.append(
                             f"{key} is used by {law_key} '{law}' only, and this joint's "
                             f"{law_key} is '{chosen}'; remove it or choose {law_key} = '{law}'"

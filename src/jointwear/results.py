@@ -86,6 +86,7 @@ class Results:
 
 
 _CLEARANCE_TABLES = ("wear", "wear_snapshots", "impacts")
+_FLOAT_COLUMNS = {"angle_deg": float, "depth_m": float, "time_s": float}  # "5" is still 5.0
 
 
 def _write_text(path: Path, text: str) -> None:
@@ -100,7 +101,7 @@ def load_results(folder: str | os.PathLike) -> Results:
     path = Path(folder)
     model_data = json.loads((path / "model.json").read_text())
     tables = {
-        name: pd.read_csv(path / f"{name}.csv")
+        name: pd.read_csv(path / f"{name}.csv", dtype=_FLOAT_COLUMNS)
         for name in _CLEARANCE_TABLES
         if (path / f"{name}.csv").exists()
     }

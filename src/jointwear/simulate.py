@@ -172,6 +172,13 @@ def simulate(model: Model, *, progress: Progress | None = None) -> Results:
         "assembly_iterations": assembly.iterations,
         "degrees_of_freedom": assembly.dof + 2 * len(joint_names),
     }
+    tables = {}
+    if joint_names:
+        tables["wear"] = wear_table(model, wk.wear)
+        tables["wear_snapshots"] = snapshot_table(
+            model, ctl.snapshot_times, ls.wear_snapshots, int(ls.counters[Counter.SNAPSHOTS])
+        )
+        tables["impacts"] = pd.DataFrame(impacts, columns=IMPACT_COLUMNS)
     summary = {
         "jointwear_version": __version__,
         "model": model.name,
@@ -187,9 +194,5 @@ def simulate(model: Model, *, progress: Progress | None = None) -> Results:
         timeseries=pd.DataFrame(data, columns=columns),
         events=pd.DataFrame(events, columns=["time", "event", "direction"]),
         summary=summary,
-        wear=wear_table(model, wk.wear),
-        wear_snapshots=snapshot_table(
-            model, ctl.snapshot_times, ls.wear_snapshots, int(ls.counters[Counter.SNAPSHOTS])
-        ),
-        impacts=pd.DataFrame(impacts, columns=IMPACT_COLUMNS),
+        **tables,
     )
