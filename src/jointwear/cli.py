@@ -22,6 +22,7 @@ from .assembly import assemble
 from .model import ModelError, load_model
 from .model_clearance import Clearance
 from .results import load_results
+from .run import IDEAL_FOLDER
 from .run import run as run_model
 from .system import build_system, has_clearance
 
@@ -82,14 +83,23 @@ def run(
     t_end: Annotated[float | None, typer.Option("--t-end", help="End time [s].")] = None,
     overrides: Overrides = None,
     figures: Annotated[bool, typer.Option("--figures/--no-figures", help="Draw figures.")] = True,
+    ideal: Annotated[
+        bool,
+        typer.Option(
+            "--ideal/--no-ideal",
+            help="With clearance joints, also run the all-ideal mechanism into OUT/ideal.",
+        ),
+    ] = True,
 ) -> None:
-    """Simulate MODEL and write the results folder (summary, time series, figures)."""
+    """Simulate MODEL and write the results folder (summary, time series, wear, figures)."""
     settings = list(overrides or [])
     if t_end is not None:
         settings.append(f"solver.t_end={t_end!r}")
     bar = _ProgressBar()
     try:
-        results = run_model(model, out_dir, overrides=settings, figures=figures, progress=bar)
+        results = run_model(
+            model, out_dir, overrides=settings, figures=figures, ideal=ideal, progress=bar
+        )
     except ModelError as error:
         raise _fail(error) from None
     finally:
@@ -100,9 +110,23 @@ def run(
         f"{stats['accepted_steps']} steps, {stats['simulation_wall_s']:.3g} s wall",
         soft_wrap=True,
     )
+    for name, joint in results.summary.get("clearance_joints", {}).items():
+        out.print(_joint_line(name, joint), soft_wrap=True, highlight=False)
     out.print(f"results in {out_dir}", soft_wrap=True)
     if results.status != "success":
         raise typer.Exit(code=1)
+
+
+def _joint_line(name: str, joint: dict) -> str:
+    """One line of a clearance joint's headline figures."""
+    return (
+        f"{name}: max contact force {joint['max_contact_force_n'] / 1e3:.4g} kN, in contact "
+        f"{100 * joint['contact_time_fraction']:.4g} % of the time, {joint['impacts']} impacts; "
+        f"max wear depth journal {joint['max_wear_depth_journal_m'] * 1e6:.4g} µm at "
+        f"{joint['max_wear_angle_journal_deg']:.4g}°, bearing "
+        f"{joint['max_wear_depth_bearing_m'] * 1e6:.4g} µm at "
+        f"{joint['max_wear_angle_bearing_deg']:.4g}°"
+    )
 
 
 @app.command()
@@ -178,5 +202,7 @@ def plot(folder: Annotated[Path, typer.Argument(help="Results folder.")]) -> Non
         raise typer.Exit(code=2)
     from .plots import save_figures  # matplotlib only for this command
 
-    for path in save_figures(load_results(folder), folder / "figures"):
+    companion = folder / IDEAL_FOLDER
+    ideal = load_results(companion) if (companion / "summary.json").is_file() else None
+    for path in save_figures(load_results(folder), folder / "figures", ideal=ideal):
         out.print(str(path), soft_wrap=True)

@@ -66,13 +66,14 @@ def plot_cycle(results: Results) -> Figure:
 
 
 def plot_energy(results: Results) -> Figure:
-    """Kinetic, potential and total energy, and the constraint violation, against time."""
+    """Kinetic, potential, contact and total energy, and the constraint violation, against time."""
     df = results.timeseries
     fig = Figure(figsize=(7.0, 6.0), layout="constrained")
     top, bottom = fig.subplots(2, 1, sharex=True)
-    total = df["energy_kinetic"] + df["energy_potential"]
-    top.plot(df["time"], df["energy_kinetic"], label="kinetic")
-    top.plot(df["time"], df["energy_potential"], label="potential")
+    parts = [c for c in ("energy_kinetic", "energy_potential", "energy_contact") if c in df]
+    total = df[parts].sum(axis=1)
+    for column in parts:
+        top.plot(df["time"], df[column], label=column.removeprefix("energy_"))
     top.plot(df["time"], total, label="total", color="k")
     top.set_ylabel("energy [J]")
     top.legend(loc="best")
@@ -85,8 +86,11 @@ def plot_energy(results: Results) -> Figure:
     return fig
 
 
-def save_figures(results: Results, folder: str | Path) -> list[Path]:
-    """Draw every figure that applies to ``results`` into ``folder`` (PNG); return paths."""
+def save_figures(results: Results, folder: str | Path, ideal: Results | None = None) -> list[Path]:
+    """Draw every figure that applies to ``results`` into ``folder`` (PNG); return paths.
+
+    ``ideal``: the same mechanism with ideal joints, for the clearance comparisons.
+    """
     path = Path(folder)
     path.mkdir(parents=True, exist_ok=True)
     figures = {"energy": plot_energy}

@@ -11,6 +11,8 @@ from .model import ModelError, load_model
 from .results import Results
 from .simulate import Progress, simulate
 
+IDEAL_FOLDER = "ideal"  # subfolder with the all-ideal companion run of a clearance model
+
 
 def run(
     model_path: str | os.PathLike,
@@ -18,6 +20,7 @@ def run(
     *,
     overrides: Sequence[str] = (),
     figures: bool = True,
+    ideal: bool = True,
     progress: Progress | None = None,
 ) -> Results:
     """Load a model file, simulate it and write the results folder ``out``.
@@ -32,19 +35,32 @@ def run(
         ``dotted.path=value`` settings applied before validation (as ``--set``).
     figures
         Also draw the figures into ``out/figures``.
+    ideal
+        When the model has clearance joints and its run succeeds, also simulate the same
+        mechanism with every joint ideal into ``out/ideal``, for the comparison figures.
     progress
         Called after every chunk with (time reached, end time) [s].
+
+    Returns
+    -------
+    Results
+        Those of the model as given (with its clearance joints).
     """
     model = load_model(model_path, overrides)
     folder = Path(out)
     _check_folder(folder)
     results = simulate(model, progress=progress)
+    companion = None
+    if ideal and model.has_clearance and results.status == "success":
+        companion = simulate(model.ideal())
     with stop_requests():  # a Ctrl-C now must not leave a half-written folder
         results.save(folder)
+        if companion is not None:
+            companion.save(folder / IDEAL_FOLDER)
         if figures and len(results.timeseries) > 1:
             from .plots import save_figures  # matplotlib only when figures are wanted
 
-            save_figures(results, folder / "figures")
+            save_figures(results, folder / "figures", ideal=companion)
     return results
 
 
