@@ -3,6 +3,7 @@
 import importlib
 
 import numpy as np
+import pandas as pd
 import pytest
 from runs import EXAMPLES
 
@@ -15,8 +16,12 @@ simulate_module = importlib.import_module("jointwear.simulate")  # the module, n
 def test_result_does_not_depend_on_chunking(monkeypatch, integrator):
     model = jw.load_model(
         EXAMPLES / "flores2009_fourbar.toml",
-        [f"solver.integrator={integrator}", "solver.t_end=0.03"],
-    )
+        [
+            f"solver.integrator={integrator}",
+            "solver.t_end=0.03",
+            "solver.wear_snapshot_interval=0.01",
+        ],
+    )  # the example's clearance joint: contact onsets cut steps, wear accumulates per step
     one_go = jw.simulate(model)
     monkeypatch.setattr(simulate_module, "CHUNK_WALL_S", 1e-9)  # a chunk per step or so
     monkeypatch.setattr(simulate_module, "MIN_CHUNK_STEPS", 1)
@@ -24,6 +29,11 @@ def test_result_does_not_depend_on_chunking(monkeypatch, integrator):
     assert one_go.summary["stats"]["accepted_steps"] == many.summary["stats"]["accepted_steps"]
     # Bit-identical: the chunk ends never shorten a step.
     np.testing.assert_array_equal(one_go.timeseries.to_numpy(), many.timeseries.to_numpy())
+    assert len(one_go.impacts) > 0 and len(one_go.wear_snapshots) > 0
+    for table in ("wear", "wear_snapshots", "impacts"):
+        pd.testing.assert_frame_equal(getattr(one_go, table), getattr(many, table))
+    joints = "clearance_joints"
+    assert one_go.summary[joints] == many.summary[joints]
 
 
 def test_rows_at_requested_times_and_end_time():
@@ -53,3 +63,20 @@ def test_absurd_output_size_is_refused_up_front():
             EXAMPLES / "pendulum.toml", ["solver.t_end=1000", "solver.output_interval=1e-9"]
         )
     assert "raise output_interval" in error.value.problems[0]
+
+
+@pytest.mark.parametrize("integrator", ["dopri5", "abm"])
+def test_contact_onsets_are_located_to_the_contact_tolerance(integrator):
+    model = jw.load_model(
+        EXAMPLES / "flores2009_fourbar.toml",
+        [f"solver.integrator={integrator}", "solver.t_end=0.01"],
+    )
+    impacts = jw.simulate(model).impacts
+    tolerance = model.joint("coupler_follower").clearance.contact_tolerance  # 1e-10 m
+    # The journal starts centred, 0.2 mm from the wall, and hits it within the first turn.
+    assert len(impacts) >= 1
+    # The loop cuts the step where the penetration has just passed the tolerance: located
+    # on the dense output until it exceeds the tolerance by at most the tolerance itself.
+    assert (impacts["penetration_m"] > tolerance).all()
+    assert (impacts["penetration_m"] <= 2 * tolerance).all()
+    assert (impacts["penetration_velocity_m_s"] > 0).all()  # approaching at every onset

@@ -4,7 +4,8 @@
   angle_deg, depth_m`` (``angle_deg`` is the sector's centre in the surface's body frame);
   the snapshots add the time they were taken, ``time_s``, in front;
 - impacts (contact onsets): ``time_s, joint, penetration_velocity_m_s, bearing_angle_deg,
-  journal_angle_deg``;
+  journal_angle_deg, penetration_m`` (the last shows how closely the onset was located: it
+  lies between the contact tolerance and twice that);
 - per joint, the figures ``summary.json`` reports under ``clearance_joints``.
 """
 
@@ -28,6 +29,7 @@ IMPACT_COLUMNS = [
     "penetration_velocity_m_s",
     "bearing_angle_deg",
     "journal_angle_deg",
+    "penetration_m",
 ]
 
 
@@ -70,6 +72,7 @@ def impact_rows(
             float(info[i, cs.I_SPEED]),
             math.degrees(info[i, cs.I_THETA_B]),
             math.degrees(info[i, cs.I_THETA_J]),
+            float(info[i, cs.I_DELTA]),
         )
         for i in range(count)
     ]

@@ -28,7 +28,7 @@ from .interrupts import stop_requests
 from .kernels import loop
 from .kernels.abm import make_abm_state
 from .kernels.codes import N_COUNTERS, Counter, Status
-from .kernels.contact_steps import N_TOTALS
+from .kernels.contact_steps import N_IMPACT_INFO, N_TOTALS
 from .kernels.dopri5 import make_dopri5_state
 from .model import Model
 from .results import Results, status_message
@@ -71,7 +71,7 @@ def _loop_state(
         contact_totals=np.zeros((nc, N_TOTALS)),
         impact_time=np.zeros(EVENT_CAPACITY),
         impact_joint=np.zeros(EVENT_CAPACITY, dtype=np.int64),
-        impact_info=np.zeros((EVENT_CAPACITY, 3)),
+        impact_info=np.zeros((EVENT_CAPACITY, N_IMPACT_INFO)),
         wear_snapshots=np.zeros((n_snapshots, nc, 2, sectors)),
     )
 

@@ -61,6 +61,8 @@ N_TOTALS = 8
 I_SPEED = 0  # penetration rate at onset [m/s]
 I_THETA_B = 1  # contact angle in the bearing's frame [rad]
 I_THETA_J = 2  # contact angle in the journal's frame [rad]
+I_DELTA = 3  # penetration where the onset was located [m]
+N_IMPACT_INFO = 4
 
 
 @njit(cache=True)
@@ -102,6 +104,7 @@ def begin_periods(sys, ls, wk, t, y):
             ls.impact_info[slot, I_SPEED] = c[C_DDOT]
             ls.impact_info[slot, I_THETA_B] = c[C_THETA_B]
             ls.impact_info[slot, I_THETA_J] = c[C_THETA_J]
+            ls.impact_info[slot, I_DELTA] = c[C_DELTA]
             ls.counters[Counter.IMPACTS] = slot + 1
 
 

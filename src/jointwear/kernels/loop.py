@@ -69,7 +69,7 @@ class LoopState(NamedTuple):
     contact_totals: np.ndarray  # (nc, N_TOTALS) per clearance joint, contact_steps.T_*
     impact_time: np.ndarray  # (cap,) contact onsets logged during this chunk [s]
     impact_joint: np.ndarray  # (cap,) int64 clearance joint
-    impact_info: np.ndarray  # (cap, 3) contact_steps.I_* of each onset
+    impact_info: np.ndarray  # (cap, N_IMPACT_INFO) contact_steps.I_* of each onset
     wear_snapshots: np.ndarray  # (ns, nc, 2, max sectors) wear depths at snapshot_times [m]
 
 
