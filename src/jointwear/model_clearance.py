@@ -31,18 +31,26 @@ Modulus = Annotated[Pressure, Gt(0)]
 Poisson = Annotated[Number, Ge(0), Le(0.5)]
 PositiveSpeed = Annotated[Speed, Gt(0)]
 
-# Keys that only some laws use: (law key, {law name: keys it uses}).
+_DAMPED = ("lankarani_nikravesh", "hunt_crossley", "flores2011")
+# Keys that only some laws use: {law key: {key: the laws that use it}}.
 _LAW_KEYS = {
+    "normal_law": {"restitution_coefficient": _DAMPED},
     "friction_law": {
-        "ambrosio": ("no_friction_speed", "full_friction_speed"),
-        "coulomb": ("regularisation_speed",),
-        "stick_slip": ("static_friction_coefficient", "stiction_speed", "transition_speed"),
+        "no_friction_speed": ("ambrosio",),
+        "full_friction_speed": ("ambrosio",),
+        "regularisation_speed": ("coulomb",),
+        "static_friction_coefficient": ("stick_slip",),
+        "stiction_speed": ("stick_slip",),
+        "transition_speed": ("stick_slip",),
     },
     "wear_law": {
-        "archard": ("wear_coefficient", "dimensionless_wear_coefficient", "hardness"),
-        "reye": ("shear_strength",),
+        "wear_coefficient": ("archard",),
+        "dimensionless_wear_coefficient": ("archard",),
+        "hardness": ("archard",),
+        "shear_strength": ("reye",),
     },
 }
+HERTZ_EXPONENT = 1.5  # the exponent the internal-cylinder stiffness formula is for
 
 
 class Clearance(Table):
@@ -96,13 +104,14 @@ class Clearance(Table):
         lines = []  # a default value is not a setting (and model.json writes them all)
         for law_key, users in _LAW_KEYS.items():
             chosen = getattr(self, law_key)
-            for law, keys in users.items():
-                for key in keys:
-                    if getattr(self, key) != Clearance.model_fields[key].default and law != chosen:
-                        lines.append(
-                            f"{key} is used by {law_key} '{law}' only, and this joint's "
-                            f"{law_key} is '{chosen}'; remove it or choose {law_key} = '{law}'"
-                        )
+            for key, laws in users.items():
+                given = getattr(self, key) != Clearance.model_fields[key].default
+                if given and chosen not in laws:
+                    names = " or ".join(f"'{law}'" for law in laws)
+                    lines.append(
+                        f"{key} is used by {law_key} {names} only, and this joint's "
+                        f"{law_key} is '{chosen}'; remove it or choose another {law_key}"
+                    )
         return lines
 
     def _missing_keys(self) -> list[str]:
@@ -110,6 +119,11 @@ class Clearance(Table):
         if self.normal_law != "hertz" and self.restitution_coefficient is None:
             lines.append(
                 f"normal_law '{self.normal_law}' needs restitution_coefficient (0 < c_e <= 1)"
+            )
+        if self.exponent != HERTZ_EXPONENT and self.contact_stiffness is None:
+            lines.append(
+                f"exponent {self.exponent:g} needs contact_stiffness [N/m^{self.exponent:g}]: "
+                f"the stiffness formula is for exponent {HERTZ_EXPONENT:g}"
             )
         if self.friction_law == "stick_slip" and self.static_friction_coefficient is None:
             lines.append("friction_law 'stick_slip' needs static_friction_coefficient")
