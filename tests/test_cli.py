@@ -306,8 +306,11 @@ def test_plot_redraws_the_figures(tmp_path):
     assert not (out / "figures").exists()
     result = invoke("plot", out, env={"COLUMNS": "500"})
     assert result.exit_code == 0, result.output
-    expected = [out / "figures" / "energy.png", out / "figures" / "cycle.png"]
+    names = ["energy.png", "cycle.png", "fig7_dynamics.png", "fig7d_orbit.png"]
+    names += ["fig8_wear_sectors.png", "fig9_wear_polar.png", "fig10_profile.png"]
+    expected = [out / "figures" / name for name in [*names, "mechanism.gif"]]
     assert result.stdout.splitlines() == [str(p) for p in expected]
+    assert (out / "ideal" / "summary.json").is_file()  # the companion run, for Fig. 7
     for path in expected:
         assert path.stat().st_size > 1000
     # Again, over the existing figures.

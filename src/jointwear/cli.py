@@ -200,7 +200,7 @@ def plot(folder: Annotated[Path, typer.Argument(help="Results folder.")]) -> Non
     if not (folder / "summary.json").is_file():
         err.print(f"{folder}: not a results folder (no summary.json)", markup=False, soft_wrap=True)
         raise typer.Exit(code=2)
-    from .plots import save_figures  # matplotlib only for this command
+    from .figures import save_figures  # matplotlib only for this command
 
     companion = folder / IDEAL_FOLDER
     ideal = load_results(companion) if (companion / "summary.json").is_file() else None

@@ -7,7 +7,6 @@ never the kernel arrays.
 from __future__ import annotations
 
 import math
-from pathlib import Path
 
 import numpy as np
 import pandas as pd
@@ -18,7 +17,7 @@ from .results import Results
 CRANK_FUNCTIONS = ("constant_speed",)  # driver functions that turn a crank
 
 
-def _crank(results: Results) -> tuple[str, str, float] | None:
+def crank_driver(results: Results) -> tuple[str, str, float] | None:
     """(driver name, driven body, speed [rad/s]) of the first constant-speed angle driver."""
     for driver in results.model.drivers:
         if driver.type == "angle" and driver.function.type in CRANK_FUNCTIONS:
@@ -29,7 +28,7 @@ def _crank(results: Results) -> tuple[str, str, float] | None:
 def _last_turn(df: pd.DataFrame, speed: float) -> pd.DataFrame:
     period = 2.0 * math.pi / abs(speed)
     t_end = df["time"].iloc[-1]
-    return df[df["time"] >= t_end - period * (1.0 - 1e-9)]
+    return df[df["time"] >= t_end - period * (1.0 + 1e-9)]
 
 
 def plot_cycle(results: Results) -> Figure:
@@ -37,7 +36,7 @@ def plot_cycle(results: Results) -> Figure:
 
     Against the crank angle over the last crank turn (paper Fig. 7a-c, ideal case).
     """
-    crank = _crank(results)
+    crank = crank_driver(results)
     if crank is None:
         raise ValueError("plot_cycle needs a constant-speed angle driver")
     name, driven, speed = crank
@@ -84,21 +83,3 @@ def plot_energy(results: Results) -> Figure:
         ax.grid(alpha=0.3)
     fig.suptitle(f"{results.model.name}: energy and constraint drift")
     return fig
-
-
-def save_figures(results: Results, folder: str | Path, ideal: Results | None = None) -> list[Path]:
-    """Draw every figure that applies to ``results`` into ``folder`` (PNG); return paths.
-
-    ``ideal``: the same mechanism with ideal joints, for the clearance comparisons.
-    """
-    path = Path(folder)
-    path.mkdir(parents=True, exist_ok=True)
-    figures = {"energy": plot_energy}
-    if _crank(results) is not None:
-        figures["cycle"] = plot_cycle
-    written = []
-    for name, draw in figures.items():
-        fig = draw(results)
-        fig.savefig(path / f"{name}.png", dpi=150)
-        written.append(path / f"{name}.png")
-    return written

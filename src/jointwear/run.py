@@ -58,7 +58,7 @@ def run(
         if companion is not None:
             companion.save(folder / IDEAL_FOLDER)
         if figures and len(results.timeseries) > 1:
-            from .plots import save_figures  # matplotlib only when figures are wanted
+            from .figures import save_figures  # matplotlib only when figures are wanted
 
             save_figures(results, folder / "figures", ideal=companion)
     return results

@@ -1,0 +1,156 @@
+"""Clearance figures (paper Figs. 7-10) and the mechanism animation: files and plotted data."""
+
+import numpy as np
+import pytest
+from PIL import Image
+from runs import EXAMPLES, simulate_ok
+
+from jointwear.animation import save_animation
+from jointwear.plots_clearance import (
+    PROFILE_SHARE,
+    plot_dynamics,
+    plot_orbit,
+    plot_wear_polar,
+    plot_wear_profile,
+    plot_wear_sectors,
+    save_clearance_figures,
+    wear_exaggeration,
+)
+
+FOURBAR = EXAMPLES / "flores2009_fourbar.toml"
+# 2.5 crank turns; snapshots at 0.03, 0.06 and 0.09 s, so the end of the run is not one.
+SHORT = ["solver.t_end=0.1", "solver.wear_snapshot_interval=0.03"]
+JOINT = "coupler_follower"
+FIGURES = ["fig7_dynamics", "fig7d_orbit", "fig8_wear_sectors", "fig9_wear_polar", "fig10_profile"]
+
+
+@pytest.fixture(scope="module")
+def fourbar():
+    return simulate_ok(FOURBAR, SHORT)
+
+
+@pytest.fixture(scope="module")
+def ideal():
+    return simulate_ok(FOURBAR, SHORT, ideal=True)
+
+
+@pytest.fixture(scope="module")
+def pendulum():
+    return simulate_ok(
+        EXAMPLES / "pendulum.toml", ["solver.t_end=0.1", "solver.output_interval=0.004"]
+    )
+
+
+def profile(table, surface):
+    rows = table[(table["joint"] == JOINT) & (table["surface"] == surface)]
+    return rows.sort_values("sector")["depth_m"].to_numpy()
+
+
+def test_save_clearance_figures_writes_every_png(fourbar, ideal, tmp_path):
+    paths = save_clearance_figures(fourbar, tmp_path / "figs", ideal)
+    assert [p.name for p in paths] == [f"{name}.png" for name in FIGURES]
+    for path in paths:
+        with Image.open(path) as image:
+            assert image.format == "PNG"
+            assert min(image.size) > 600  # dpi 150 on figures of 5 inches and more
+
+
+def test_no_clearance_joints_no_figures(pendulum, ideal, tmp_path):
+    for results in (pendulum, ideal):
+        assert save_clearance_figures(results, tmp_path / "none") == []
+    assert not (tmp_path / "none").exists()
+
+
+def test_dynamics_show_the_last_two_turns_of_both_runs(fourbar, ideal):
+    fig = plot_dynamics(fourbar, ideal)
+    velocity, acceleration, torque = fig.axes
+    two_turns = 801  # 0.04 s a turn, rows every 0.1 ms, both ends
+    ts, ts_ideal = fourbar.timeseries.tail(two_turns), ideal.timeseries.tail(two_turns)
+    for ax, column in [(velocity, "omega_follower"), (acceleration, "alpha_follower")]:
+        clearance_line, ideal_line = ax.lines
+        np.testing.assert_array_equal(clearance_line.get_ydata(), ts[column])
+        np.testing.assert_array_equal(ideal_line.get_ydata(), ts_ideal[column])
+    np.testing.assert_array_equal(torque.lines[0].get_ydata(), ts["torque_motor"])
+    angle = torque.lines[0].get_xdata()
+    assert angle[0] == 0.0
+    assert angle[-1] == pytest.approx(720.0, abs=1e-6)
+    assert torque.get_ylabel() == "driving moment [N m]"
+
+
+def test_dynamics_without_ideal_or_rotation(fourbar):
+    assert all(len(ax.lines) == 1 for ax in plot_dynamics(fourbar).axes)
+    slider = simulate_ok(EXAMPLES / "slider_crank.toml", ["solver.t_end=0.012"])  # one turn
+    velocity, acceleration, _ = plot_dynamics(slider).axes
+    assert (velocity.get_title(loc="left"), velocity.get_ylabel()) == (
+        "(a) slider x velocity",
+        "x velocity [m/s]",
+    )
+    assert acceleration.get_ylabel() == "x acceleration [m/s²]"
+    np.testing.assert_array_equal(velocity.lines[0].get_ydata(), slider.timeseries["vx_slider"])
+
+
+def test_orbit_is_the_eccentricity_in_mm(fourbar):
+    (ax,) = plot_orbit(fourbar).axes
+    whole_run, last_turns, circle = ax.lines[:3]
+    ts = fourbar.timeseries
+    np.testing.assert_array_equal(whole_run.get_xdata(), ts[f"{JOINT}_ex"] * 1e3)
+    np.testing.assert_array_equal(whole_run.get_ydata(), ts[f"{JOINT}_ey"] * 1e3)
+    assert len(last_turns.get_xdata()) == 801
+    radius = np.hypot(circle.get_xdata(), circle.get_ydata())
+    np.testing.assert_allclose(radius, 0.2, rtol=1e-9)  # c = 10.0 mm - 9.8 mm
+
+
+def test_sector_panels_hold_every_snapshot_and_the_end(fourbar):
+    journal, bearing = plot_wear_sectors(fourbar).axes
+    snapshots = fourbar.wear_snapshots
+    times = sorted(snapshots["time_s"].unique())
+    assert times == pytest.approx([0.03, 0.06, 0.09])
+    for ax, surface in [(journal, "journal"), (bearing, "bearing")]:
+        assert len(ax.lines) == 4
+        for line, time in zip(ax.lines, times, strict=False):
+            depth = profile(snapshots[snapshots["time_s"] == time], surface)
+            np.testing.assert_array_equal(line.get_ydata(), depth * 1e6)
+        np.testing.assert_array_equal(
+            ax.lines[-1].get_ydata(), profile(fourbar.wear, surface) * 1e6
+        )
+    labels = [text.get_text() for text in journal.get_legend().get_texts()]
+    assert labels == ["after 0.8 turns", "after 1.5 turns", "after 2.2 turns", "after 2.5 turns"]
+
+
+def test_polar_radii_are_the_final_wear(fourbar):
+    journal, bearing = plot_wear_polar(fourbar).axes
+    for ax, surface in [(journal, "journal"), (bearing, "bearing")]:
+        theta, radius = ax.lines[0].get_xdata(), ax.lines[0].get_ydata()
+        depth = profile(fourbar.wear, surface) * 1e6
+        np.testing.assert_array_equal(radius, [*depth, depth[0]])  # closed curve
+        np.testing.assert_allclose(np.degrees(theta[:-1]), (np.arange(36) + 0.5) * 10.0)
+
+
+def test_profile_exaggeration_draws_the_deepest_wear_at_15_percent(fourbar):
+    scale = wear_exaggeration(fourbar, JOINT)
+    deepest = fourbar.wear["depth_m"].max()
+    assert deepest > 0.0
+    assert scale * deepest / 9.8e-3 == pytest.approx(PROFILE_SHARE, rel=0.05)
+    assert float(f"{scale:.2g}") == scale
+    journal, bearing = plot_wear_profile(fourbar).axes
+    for ax, surface, radius, sign in [(journal, "journal", 9.8, -1), (bearing, "bearing", 10.0, 1)]:
+        nominal, worn = ax.lines[:2]
+        np.testing.assert_allclose(np.hypot(nominal.get_xdata(), nominal.get_ydata()), radius)
+        shift = sign * (np.hypot(worn.get_xdata(), worn.get_ydata()) - radius)
+        assert shift.max() == pytest.approx(scale * profile(fourbar.wear, surface).max() * 1e3)
+        assert f"wear × {scale:g}" in worn.get_label()
+
+
+def test_animation_writes_a_gif_of_the_requested_frames(fourbar, tmp_path):
+    path = save_animation(fourbar, tmp_path / "anim" / "fourbar.gif", frames=12, fps=20)
+    with Image.open(path) as gif:
+        assert gif.format == "GIF"
+        assert gif.n_frames == 12
+        assert gif.size == (640, 600)
+        assert gif.info["duration"] == 50  # [ms] at 20 frames per second
+
+
+def test_animation_without_crank_or_clearance(pendulum, tmp_path):
+    path = save_animation(pendulum, tmp_path / "pendulum.gif", frames=50)
+    with Image.open(path) as gif:
+        assert gif.n_frames == 11  # the last 0.04 s, rows every 4 ms: fewer than asked
