@@ -275,10 +275,11 @@ def _write_rows(sys, ctl, ls, dp, ab, wk, out, rows, t):
 
 @njit(cache=True)
 def _after_step(sys, ctl, ls, dp, ab, wk, out, rows, t_old, h):
-    """Contact onsets, wear and events of the step just accepted; return (rows, False if singular).
+    """Contact onsets, wear, events and rows of the step just accepted.
 
-    At an onset the step is cut there: the rows and events up to it are written from this
-    step's dense output, and the integrator restarts from the cut.
+    Returns (rows, False if singular). At an onset the step is cut there: the rows and events
+    up to it are written from this step's dense output, and the integrator restarts from the
+    cut.
     """
     t_new = current_time(ctl, dp, ab)
     y_new = current_state(ctl, dp, ab)
@@ -292,13 +293,14 @@ def _after_step(sys, ctl, ls, dp, ab, wk, out, rows, t_old, h):
         interpolate(ctl, dp, ab, 0.5 * (t_old + t_cut), ls.y_scratch)
         accumulate_step(sys, ctl, ls, wk, t_old, t_cut, ls.y_scratch)
     _log_events(sys, ctl, ls, dp, ab, wk, t_old, t_cut, ls.y_cut)
+    # The step's rows see the contact periods as the step did, before they open or close.
+    rows, ok = _write_rows(sys, ctl, ls, dp, ab, wk, out, rows, t_cut)
+    if not ok:
+        return rows, False
     if t_cut == t_new:
         if nc:
             begin_periods(sys, ls, wk, t_new, y_new)  # only closes periods here
         return rows, True
-    rows, ok = _write_rows(sys, ctl, ls, dp, ab, wk, out, rows, t_cut)
-    if not ok:
-        return rows, False
     begin_periods(sys, ls, wk, t_cut, ls.y_cut)
     ls.counters[Counter.RHS_EVALS] += 1
     if not rhs(t_cut, ls.y_cut, sys, wk, ls.yp_scratch):
