@@ -313,8 +313,10 @@ def test_plot_redraws_the_figures(tmp_path):
     assert (out / "ideal" / "summary.json").is_file()  # the companion run, for Fig. 7
     for path in expected:
         assert path.stat().st_size > 1000
-    # Again, over the existing figures.
-    assert invoke("plot", out).exit_code == 0
+    # Again, over the existing figures, without the animation.
+    again = invoke("plot", out, "--no-animation", env={"COLUMNS": "500"})
+    assert again.exit_code == 0, again.output
+    assert again.stdout.splitlines() == [str(p) for p in expected[:-1]]
 
 
 def test_plot_of_a_folder_without_results_exits_2(tmp_path):

@@ -195,7 +195,12 @@ def _clearance_table(name: str, clearance: Clearance) -> Table:
 
 
 @app.command()
-def plot(folder: Annotated[Path, typer.Argument(help="Results folder.")]) -> None:
+def plot(
+    folder: Annotated[Path, typer.Argument(help="Results folder.")],
+    animation: Annotated[
+        bool, typer.Option("--animation/--no-animation", help="Also write the GIF.")
+    ] = True,
+) -> None:
     """Draw (again) the figures of a results folder into FOLDER/figures."""
     if not (folder / "summary.json").is_file():
         err.print(f"{folder}: not a results folder (no summary.json)", markup=False, soft_wrap=True)
@@ -204,5 +209,6 @@ def plot(folder: Annotated[Path, typer.Argument(help="Results folder.")]) -> Non
 
     companion = folder / IDEAL_FOLDER
     ideal = load_results(companion) if (companion / "summary.json").is_file() else None
-    for path in save_figures(load_results(folder), folder / "figures", ideal=ideal):
+    figures = save_figures(load_results(folder), folder / "figures", ideal, animation=animation)
+    for path in figures:
         out.print(str(path), soft_wrap=True)
