@@ -59,20 +59,26 @@ def _loop_state(
     system: System, n_state: int, n_events: int, n_snapshots: int, sectors: int
 ) -> loop.LoopState:
     nc = system.clearance_body.shape[0]
+    # A step logs at most one crossing per event and one onset per joint: room for many steps.
+    events = max(EVENT_CAPACITY, 16 * n_events)
+    impacts = max(EVENT_CAPACITY, 16 * nc)
+    state = ("y_pred", "yp_pred", "y_corr", "yp_corr", "y_scratch", "yp_scratch", "y_cut")
     return loop.LoopState(
         counters=np.zeros(N_COUNTERS, dtype=np.int64),
         max_violation=np.zeros(1),
-        **{name: np.zeros(n_state) for name in loop.LoopState._fields[2:8]},
+        t_old=np.zeros(1),
+        y_old=np.zeros(n_state),
+        yp_old=np.zeros(n_state),
         event_prev=np.zeros(n_events),
-        event_time=np.zeros(EVENT_CAPACITY),
-        event_index=np.zeros(EVENT_CAPACITY, dtype=np.int64),
-        event_rising=np.zeros(EVENT_CAPACITY, dtype=np.int64),
-        y_cut=np.zeros(n_state),
+        event_time=np.zeros(events),
+        event_index=np.zeros(events, dtype=np.int64),
+        event_rising=np.zeros(events, dtype=np.int64),
         contact_totals=np.zeros((nc, N_TOTALS)),
-        impact_time=np.zeros(EVENT_CAPACITY),
-        impact_joint=np.zeros(EVENT_CAPACITY, dtype=np.int64),
-        impact_info=np.zeros((EVENT_CAPACITY, N_IMPACT_INFO)),
+        impact_time=np.zeros(impacts),
+        impact_joint=np.zeros(impacts, dtype=np.int64),
+        impact_info=np.zeros((impacts, N_IMPACT_INFO)),
         wear_snapshots=np.zeros((n_snapshots, nc, 2, sectors)),
+        **{name: np.zeros(n_state) for name in state},
     )
 
 

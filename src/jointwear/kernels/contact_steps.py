@@ -44,7 +44,7 @@ from .joint_contact import (
     P_WIDTH,
     evaluate_contact,
 )
-from .wear import accumulate_wear, hertz_line_contact, reye
+from .wear import accumulate_wear, hertz_line_contact, wear_coefficient
 
 # Columns of LoopState.contact_totals.
 T_CONTACT_TIME = 0  # time with a positive normal force [s]
@@ -74,19 +74,14 @@ def penetration_excess(sys, wk, k, y):
 
 
 @njit(cache=True)
-def starting_joint(sys, wk, y):
-    """First clearance joint in free flight whose penetration passes the tolerance at y, or -1."""
-    for k in range(sys.clearance_body.shape[0]):
-        if not wk.contact_on[k] and penetration_excess(sys, wk, k, y) > 0.0:
-            return k
-    return -1
-
-
-@njit(cache=True)
 def begin_periods(sys, ls, wk, t, y):
-    """Open or close contact periods at the step end (t [s], y); log each onset."""
+    """Open or close contact periods at the step end (t [s], y); log each onset.
+
+    Also keeps the largest normal force and penetration seen at step ends.
+    """
     for k in range(sys.clearance_body.shape[0]):
         excess = penetration_excess(sys, wk, k, y)
+        _track_peaks(ls.contact_totals[k], wk.contact[k])
         if wk.contact_on[k]:
             if excess + sys.clearance_param[k, P_TOL] <= 0.0:
                 wk.contact_on[k] = 0
@@ -109,24 +104,38 @@ def begin_periods(sys, ls, wk, t, y):
 
 
 @njit(cache=True)
+def _track_peaks(totals, c):
+    """Largest normal force and penetration so far, with the contact evaluation c."""
+    totals[T_MAX_FN] = max(totals[T_MAX_FN], c[C_FN])
+    totals[T_MAX_DELTA] = max(totals[T_MAX_DELTA], c[C_DELTA])
+
+
+@njit(cache=True)
 def _wear_surfaces(sys, wk, k, ds):
-    """Add the wear of sliding distance ds [m] under the last evaluated contact of joint k."""
+    """Add the wear of sliding distance ds [m] under the last evaluated contact of joint k.
+
+    Returns the volume removed from both surfaces [m^3].
+    """
     c = wk.contact[k]
     p = sys.clearance_param[k]
     f_n = c[C_FN]
-    if sys.clearance_law[k, L_WEAR] == WearLaw.REYE:
-        coef = reye(abs(c[C_FT]) / f_n, p[P_WEAR])
+    law = sys.clearance_law[k, L_WEAR]
+    if law == WearLaw.REYE:  # mu: the friction acting, abs(f_t) / f_n (module docstring)
+        coef = wear_coefficient(law, abs(c[C_FT]) / f_n, p[P_WEAR])
     else:
-        coef = p[P_WEAR]
+        coef = wear_coefficient(law, p[P_WEAR], 0.0)
     b, _ = hertz_line_contact(f_n, p[P_RSTAR], p[P_ESTAR], p[P_WIDTH])
     peak = sys.clearance_law[k, L_PEAK] == 1
     sectors = sys.clearance_sectors[k]
     share = p[P_SHARE]
     bearing = wk.wear[k, 0, :sectors]
     journal = wk.wear[k, 1, :sectors]
-    accumulate_wear(bearing, c[C_THETA_B], p[P_RB], p[P_WIDTH], f_n, b, ds, coef, 1.0 - share, peak)
-    accumulate_wear(journal, c[C_THETA_J], p[P_RJ], p[P_WIDTH], f_n, b, ds, coef, share, peak)
-    return coef * f_n * ds
+    volume = accumulate_wear(
+        bearing, c[C_THETA_B], p[P_RB], p[P_WIDTH], f_n, b, ds, coef, 1.0 - share, peak
+    )
+    return volume + accumulate_wear(
+        journal, c[C_THETA_J], p[P_RJ], p[P_WIDTH], f_n, b, ds, coef, share, peak
+    )
 
 
 @njit(cache=True)
@@ -143,8 +152,7 @@ def accumulate_step(sys, ctl, ls, wk, t_old, t_new, y_mid):
         sliding_speed = 0.0  # of a contact that wears
         if c[C_FN] > 0.0:
             totals[T_CONTACT_TIME] += h
-            totals[T_MAX_FN] = max(totals[T_MAX_FN], c[C_FN])
-            totals[T_MAX_DELTA] = max(totals[T_MAX_DELTA], c[C_DELTA])
+            _track_peaks(totals, c)
             totals[T_DAMPING_ENERGY] += (c[C_FN] - c[C_ELASTIC]) * c[C_DDOT] * h
             totals[T_FRICTION_ENERGY] -= c[C_FT] * c[C_VT] * h
             p = sys.clearance_param[k]

@@ -23,7 +23,7 @@ from numba import njit
 
 from . import abm, dopri5
 from .codes import Counter, EventDirection, Method, Status
-from .contact_steps import accumulate_step, begin_periods, penetration_excess, starting_joint
+from .contact_steps import accumulate_step, begin_periods, penetration_excess
 from .dynamics import constraint_norm, rhs
 from .joint_contact import P_TOL
 from .outputs import write_row
@@ -65,7 +65,10 @@ class LoopState(NamedTuple):
     event_time: np.ndarray  # (cap,) crossings logged during this chunk [s]
     event_index: np.ndarray  # (cap,) int64 event number
     event_rising: np.ndarray  # (cap,) int64 1 rising, 0 falling
-    y_cut: np.ndarray  # (N,) state where a step is cut at a contact onset
+    y_cut: np.ndarray  # (N,) state where a step is cut at a contact onset or separation
+    t_old: np.ndarray  # (1,) start of the step being taken [s] (with clearance joints)
+    y_old: np.ndarray  # (N,) state there
+    yp_old: np.ndarray  # (N,) its derivative
     contact_totals: np.ndarray  # (nc, N_TOTALS) per clearance joint, contact_steps.T_*
     impact_time: np.ndarray  # (cap,) contact onsets logged during this chunk [s]
     impact_joint: np.ndarray  # (cap,) int64 clearance joint
@@ -98,6 +101,40 @@ def interpolate(ctl, dp, ab, t, out):
         dopri5.dopri5_interpolate(dp, t, out)
     else:
         abm.abm_interpolate(ab, t, out)
+
+
+@njit(cache=True)
+def contact_state(ctl, ls, dp, ab, t, out):
+    """State at time t [s] inside the last accepted step, for the contact logic.
+
+    The Dormand-Prince dense output passes through both ends of its step; the Adams
+    interpolant is not exact at the start of its step (it integrates the corrected
+    derivative), which can put a penetration on the wrong side of an onset. For ``abm`` the
+    cubic Hermite interpolant of (y, y') at the step's two ends is used instead.
+    """
+    t_new = current_time(ctl, dp, ab)
+    if ctl.method == Method.DOPRI5 or t == t_new:
+        interpolate(ctl, dp, ab, t, out)
+        return
+    t_old = ls.t_old[0]
+    h = t_new - t_old
+    s = (t - t_old) / h
+    s2 = s * s
+    s3 = s2 * s
+    w_y0 = 2.0 * s3 - 3.0 * s2 + 1.0
+    w_f0 = (s3 - 2.0 * s2 + s) * h
+    w_y1 = 3.0 * s2 - 2.0 * s3
+    w_f1 = (s3 - s2) * h
+    for i in range(out.shape[0]):
+        out[i] = w_y0 * ls.y_old[i] + w_f0 * ls.yp_old[i] + w_y1 * ab.y[i] + w_f1 * ab.yp[i]
+
+
+@njit(cache=True)
+def current_derivative(ctl, dp, ab):
+    """Derivative y' at the time reached (a view)."""
+    if ctl.method == Method.DOPRI5:
+        return dp.k[0]
+    return ab.yp
 
 
 @njit(cache=True)
@@ -179,11 +216,18 @@ def _step_abm(sys, ctl, ls, ab, wk, t_stop):
 
 @njit(cache=True)
 def _crossing_value(sys, wk, e, y):
-    """Event function e: user events first, then one per clearance joint (contact onset)."""
+    """Event function e: user events, then per clearance joint its onset, then its separation.
+
+    Onset of joint k: penetration minus the contact tolerance; separation: the penetration.
+    """
     n_user = sys.event_body.shape[0]
+    nc = sys.clearance_body.shape[0]
     if e < n_user:
         return event_value(sys, e, y)
-    return penetration_excess(sys, wk, e - n_user, y)
+    if e < n_user + nc:
+        return penetration_excess(sys, wk, e - n_user, y)
+    k = e - n_user - nc
+    return penetration_excess(sys, wk, k, y) + sys.clearance_param[k, P_TOL]
 
 
 @njit(cache=True)
@@ -191,20 +235,26 @@ def _locate(sys, ctl, ls, dp, ab, wk, e, ta, ga, tb, gb, g_tol):
     """Crossing time of event e in [ta, tb] by the Illinois method on the dense output.
 
     Stops when the bracket is at the time tolerance or abs(g(tb)) <= g_tol; returns tb, the
-    end on the far side of the crossing.
+    end on the far side of the crossing: g > 0 there for a rising crossing (g(tb) > 0), g <= 0
+    for a falling one. With g_tol = 0 an exact zero is returned at once.
     """
+    rising = gb > 0.0
+    g_far = gb  # g at tb; gb itself may be halved by the Illinois modification
     side = 0
     for _ in range(MAX_EVENT_ITERATIONS):
-        if tb - ta <= EVENT_TIME_TOLERANCE * max(1.0, abs(tb)) or abs(gb) <= g_tol:
+        if tb - ta <= EVENT_TIME_TOLERANCE * max(1.0, abs(tb)) or abs(g_far) <= g_tol:
             break
         tc = tb - gb * (tb - ta) / (gb - ga)
         tc = min(max(tc, ta), tb)
-        interpolate(ctl, dp, ab, tc, ls.y_scratch)
+        if e < sys.event_body.shape[0]:
+            interpolate(ctl, dp, ab, tc, ls.y_scratch)
+        else:
+            contact_state(ctl, ls, dp, ab, tc, ls.y_scratch)
         gc = _crossing_value(sys, wk, e, ls.y_scratch)
-        if gc == 0.0:
+        if gc == 0.0 and g_tol == 0.0:
             return tc
-        if (gc < 0.0) == (gb < 0.0):
-            tb, gb = tc, gc
+        if (gc > 0.0) == rising:
+            tb, gb, g_far = tc, gc, gc
             if side == 1:
                 ga *= 0.5
             side = 1
@@ -236,26 +286,42 @@ def _log_events(sys, ctl, ls, dp, ab, wk, t_old, t_new, y_new):
 
 
 @njit(cache=True)
-def _contact_onset(sys, ctl, ls, dp, ab, wk, t_old, t_new, y_new):
-    """Earliest contact onset in the step just accepted [s], or t_new if there is none.
+def _contact_cut(sys, ctl, ls, dp, ab, wk, t_old, t_new, y_new):
+    """Earliest change of contact inside the step just accepted [s], or t_new if there is none.
 
-    A clearance joint in free flight whose penetration passes the tolerance at the step end
-    has its onset located to within the tolerance in penetration.
+    - Onset: a joint in free flight penetrates past the tolerance at the step end; located to
+      within the tolerance in penetration, from the state before the step (ls.y_old: the
+      Adams interpolant is not exact at the start of its step).
+    - Rebound: a joint in contact has no penetration at the step's midpoint but has it again
+      at the end; the separation is located where the penetration reaches zero (to within
+      the tolerance), so that the period closes there and the new impact is located as an
+      onset. A rebound that misses the midpoint goes unseen; steps are short in contact.
     """
-    if starting_joint(sys, wk, y_new) < 0:
-        return t_new
     n_user = sys.event_body.shape[0]
+    nc = sys.clearance_body.shape[0]
+    t_mid = 0.5 * (t_old + t_new)
     t_first = t_new
-    interpolate(ctl, dp, ab, t_old, ls.y_cut)
-    for k in range(sys.clearance_body.shape[0]):
-        if wk.contact_on[k]:
-            continue
+    midpoint_known = False
+    for k in range(nc):
+        tol = sys.clearance_param[k, P_TOL]
         g1 = penetration_excess(sys, wk, k, y_new)
-        g0 = penetration_excess(sys, wk, k, ls.y_cut)
-        if g1 > 0.0 and g0 <= 0.0:
-            tol = sys.clearance_param[k, P_TOL]
-            t_hit = _locate(sys, ctl, ls, dp, ab, wk, n_user + k, t_old, g0, t_new, g1, tol)
-            t_first = min(t_first, t_hit)
+        if not wk.contact_on[k]:
+            if g1 > 0.0:
+                g0 = min(penetration_excess(sys, wk, k, ls.y_old), 0.0)  # periods open above tol
+                t_hit = _locate(sys, ctl, ls, dp, ab, wk, n_user + k, t_old, g0, t_new, g1, tol)
+                t_first = min(t_first, t_hit)
+            continue
+        if g1 + tol <= 0.0:
+            continue  # the period ends at the step end
+        if not midpoint_known:
+            contact_state(ctl, ls, dp, ab, t_mid, ls.y_cut)
+            midpoint_known = True
+        depth_mid = penetration_excess(sys, wk, k, ls.y_cut) + tol
+        if depth_mid <= 0.0:
+            depth_old = penetration_excess(sys, wk, k, ls.y_old) + tol  # > 0 in a period
+            e = n_user + nc + k
+            t_gap = _locate(sys, ctl, ls, dp, ab, wk, e, t_old, depth_old, t_mid, depth_mid, tol)
+            t_first = min(t_first, t_gap)
     return t_first
 
 
@@ -284,13 +350,13 @@ def _after_step(sys, ctl, ls, dp, ab, wk, out, rows, t_old, h):
     t_new = current_time(ctl, dp, ab)
     y_new = current_state(ctl, dp, ab)
     nc = sys.clearance_body.shape[0]
-    t_cut = _contact_onset(sys, ctl, ls, dp, ab, wk, t_old, t_new, y_new) if nc else t_new
+    t_cut = _contact_cut(sys, ctl, ls, dp, ab, wk, t_old, t_new, y_new) if nc else t_new
     if t_cut < t_new:
-        interpolate(ctl, dp, ab, t_cut, ls.y_cut)
+        contact_state(ctl, ls, dp, ab, t_cut, ls.y_cut)
     else:
         ls.y_cut[:] = y_new
     if nc:
-        interpolate(ctl, dp, ab, 0.5 * (t_old + t_cut), ls.y_scratch)
+        contact_state(ctl, ls, dp, ab, 0.5 * (t_old + t_cut), ls.y_scratch)
         accumulate_step(sys, ctl, ls, wk, t_old, t_cut, ls.y_scratch)
     _log_events(sys, ctl, ls, dp, ab, wk, t_old, t_cut, ls.y_cut)
     # The step's rows see the contact periods as the step did, before they open or close.
@@ -299,7 +365,7 @@ def _after_step(sys, ctl, ls, dp, ab, wk, out, rows, t_old, h):
         return rows, False
     if t_cut == t_new:
         if nc:
-            begin_periods(sys, ls, wk, t_new, y_new)  # only closes periods here
+            begin_periods(sys, ls, wk, t_new, y_new)
         return rows, True
     begin_periods(sys, ls, wk, t_cut, ls.y_cut)
     ls.counters[Counter.RHS_EVALS] += 1
@@ -345,6 +411,10 @@ def advance(sys, ctl, ls, dp, ab, wk, out, t_stop, step_stop):
             return Status.MAX_STEPS, rows
         if steps >= step_stop:
             return Status.RUNNING, rows
+        if nc:
+            ls.t_old[0] = t
+            ls.y_old[:] = current_state(ctl, dp, ab)
+            ls.yp_old[:] = current_derivative(ctl, dp, ab)
         if ctl.method == Method.DOPRI5:
             outcome = _step_dopri5(sys, ctl, ls, dp, wk, ctl.t_end)
         else:

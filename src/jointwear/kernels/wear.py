@@ -141,21 +141,24 @@ def accumulate_wear(
     coef: float,
     share: float,
     single_sector: bool,
-) -> None:
-    """Add one step's wear of a surface to its sector depths [m], in place.
+) -> float:
+    """Add one step's wear of a surface to its sector depths [m], in place; return its volume.
 
     The pressure is Hertz's ellipse of half-width b [m] carrying f_n [N] on width [m];
     dh = share * coef * p * ds (paper Eqs. 13-14). Spread over the sectors the patch
     covers (worn volume share * coef * f_n * ds exactly), or with ``single_sector`` the peak
-    depth share * coef * p_max * ds into the sector containing theta (paper style).
+    depth share * coef * p_max * ds into the sector containing theta (paper style; the
+    volume is then that depth over the whole sector) [m^3].
     """
     if f_n <= 0.0 or b <= 0.0 or ds <= 0.0:
-        return
+        return 0.0
     peak = share * coef * ds * 2.0 * f_n / (math.pi * b * width)
     if single_sector:
-        depths[sector_of(theta, depths.shape[0])] += peak
-    else:
-        spread_wear(depths, theta, b / radius, peak)
+        n = depths.shape[0]
+        depths[sector_of(theta, n)] += peak
+        return peak * radius * _TWO_PI / n * width
+    spread_wear(depths, theta, b / radius, peak)
+    return share * coef * f_n * ds
 
 
 @njit(cache=True)
