@@ -94,7 +94,7 @@ def _positions(
     offset; its body's outline goes through it.
     """
     model = results.model
-    joints = [j for j in model.joints if getattr(j, "clearance", None) is not None]
+    joints = model.clearance_joints
     bearings = {j.name: _track(model, rows, j.bodies[0], j.points[0]) for j in joints}
     if clearance_scale is None and joints:
         points = np.concatenate([o.reshape(-1, 2) for o in _outlines(model, rows, {}).values()])

@@ -19,7 +19,6 @@ from numpy.typing import NDArray
 
 from .kernels import contact_steps as cs
 from .model import Model
-from .system import has_clearance
 
 SURFACES = ("bearing", "journal")
 WEAR_COLUMNS = ["joint", "surface", "sector", "angle_deg", "depth_m"]
@@ -35,13 +34,13 @@ IMPACT_COLUMNS = [
 
 def clearance_joint_names(model: Model) -> list[str]:
     """Names of the clearance joints, in the order of the kernels' clearance table."""
-    return [joint.name for joint in model.joints if has_clearance(joint)]
+    return [joint.name for joint in model.clearance_joints]
 
 
 def wear_table(model: Model, wear: NDArray[np.float64]) -> pd.DataFrame:
     """Long table of the wear depths ``wear[k, surface, sector]`` [m]."""
     rows = []
-    for k, joint in enumerate(j for j in model.joints if has_clearance(j)):
+    for k, joint in enumerate(model.clearance_joints):
         n = joint.clearance.sectors
         centres = (np.arange(n) + 0.5) * 360.0 / n
         for s, surface in enumerate(SURFACES):
@@ -83,12 +82,11 @@ def joint_summaries(
 ) -> dict[str, dict]:
     """Per clearance joint: contact, impact, wear and energy figures (SI units in the keys)."""
     summaries = {}
-    for k, joint in enumerate(j for j in model.joints if has_clearance(j)):
+    for k, joint in enumerate(model.clearance_joints):
         c = joint.clearance
         row = totals[k]
         entry = {
             "radial_clearance_m": c.radial_clearance,
-            "contact_stiffness": c.stiffness,
             "max_contact_force_n": row[cs.T_MAX_FN],
             "contact_time_fraction": row[cs.T_CONTACT_TIME] / t_reached if t_reached else 0.0,
             "impacts": int(row[cs.T_IMPACTS]),
@@ -101,8 +99,11 @@ def joint_summaries(
         for s, surface in enumerate(SURFACES):
             depths = wear[k, s, : c.sectors]
             peak = int(np.argmax(depths))
+            worn = depths[peak] > 0.0
             entry[f"max_wear_depth_{surface}_m"] = float(depths[peak])
-            entry[f"max_wear_angle_{surface}_deg"] = (peak + 0.5) * 360.0 / c.sectors
+            entry[f"max_wear_angle_{surface}_deg"] = (
+                (peak + 0.5) * 360.0 / c.sectors if worn else None
+            )
         summaries[joint.name] = {key: _plain(value) for key, value in entry.items()}
     return summaries
 

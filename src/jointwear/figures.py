@@ -6,10 +6,11 @@ from pathlib import Path
 
 from .animation import save_animation
 from .plots import crank_driver, plot_cycle, plot_energy
-from .plots_clearance import save_clearance_figures
+from .plots_clearance import CLEARANCE_FIGURES, save_clearance_figures
 from .results import Results
 
 ANIMATION = "mechanism.gif"
+ALL_FIGURES = {"energy.png", "cycle.png", *(f"{n}.png" for n in CLEARANCE_FIGURES), ANIMATION}
 
 
 def save_figures(
@@ -19,7 +20,8 @@ def save_figures(
 
     PNGs of the energy and, with a crank, of one turn; with clearance joints the paper's
     Fig. 7-10 (``ideal``: the same mechanism with ideal joints, for Fig. 7); and, unless
-    ``animation`` is false, a GIF of the mechanism.
+    ``animation`` is false, a GIF of the mechanism (an existing GIF is then kept). Figures of
+    ours that do not apply to these results are removed.
     """
     path = Path(folder)
     path.mkdir(parents=True, exist_ok=True)
@@ -33,4 +35,7 @@ def save_figures(
     written += save_clearance_figures(results, path, ideal)
     if animation:
         written.append(save_animation(results, path / ANIMATION))
+    kept = {p.name for p in written} | (set() if animation else {ANIMATION})
+    for name in ALL_FIGURES - kept:  # left by an earlier run of another model
+        (path / name).unlink(missing_ok=True)
     return written

@@ -58,6 +58,7 @@ from jointwear.units import (
 
 INTEGRATORS: dict[str, Method] = {"dopri5": Method.DOPRI5, "abm": Method.ABM}
 MAX_OUTPUT_ROWS = 5e7  # about 16 GB of time series for a small mechanism
+MAX_WEAR_SNAPSHOTS = 10_000  # each holds every sector of every clearance joint
 _T = TypeVar("_T")
 _RateT = TypeVar("_RateT")
 
@@ -282,6 +283,12 @@ class Solver(Table):
                 f"min_step {self.min_step:g}, initial_step {self.initial_step:g}, max_step "
                 f"{self.max_step:g} [s] are out of order; need min_step <= initial_step <= max_step"
             )
+        snapshots = self.t_end / (self.wear_snapshot_interval or self.t_end)
+        if snapshots > MAX_WEAR_SNAPSHOTS:
+            raise ValueError(
+                f"t_end / wear_snapshot_interval asks for {snapshots:.3g} wear snapshots; at "
+                f"most {MAX_WEAR_SNAPSHOTS} are allowed; raise wear_snapshot_interval"
+            )
         rows = self.t_end / self.output_interval
         if rows > MAX_OUTPUT_ROWS:
             raise ValueError(
@@ -350,9 +357,14 @@ class Model(Table):
         return _named(self.joints, name)
 
     @property
+    def clearance_joints(self) -> tuple["RevoluteJoint", ...]:
+        """The joints with clearance, in file order (the kernels' clearance table order)."""
+        return tuple(j for j in self.joints if getattr(j, "clearance", None) is not None)
+
+    @property
     def has_clearance(self) -> bool:
         """Whether any joint has clearance."""
-        return any(getattr(joint, "clearance", None) is not None for joint in self.joints)
+        return bool(self.clearance_joints)
 
     def ideal(self) -> "Model":
         """The same model with every clearance joint made ideal (journal centred)."""

@@ -9,7 +9,7 @@ does not use is refused, so a model never carries a setting that silently does n
 from typing import Annotated
 
 from annotated_types import Ge, Gt, Le
-from pydantic import model_validator
+from pydantic import BeforeValidator, model_validator
 
 from jointwear.kernels.codes import FrictionLaw, NormalLaw, WearLaw
 from jointwear.kernels.contact import (
@@ -53,6 +53,15 @@ _LAW_KEYS = {
 HERTZ_EXPONENT = 1.5  # the exponent the internal-cylinder stiffness formula is for
 
 
+def _plain_stiffness(value: object) -> object:
+    if isinstance(value, str):
+        raise ValueError(
+            f"{value!r}: give K as a plain number in SI units, N/m^exponent (units are not "
+            "read here: they depend on exponent)"
+        )
+    return value
+
+
 class Clearance(Table):
     """A revolute joint with clearance: journal in bearing, contact, friction and wear (SI)."""
 
@@ -64,7 +73,7 @@ class Clearance(Table):
     normal_law: Annotated[str, one_of(NORMAL_LAWS, "normal law")] = "lankarani_nikravesh"
     restitution_coefficient: Annotated[Number, Gt(0), Le(1)] | None = None
     exponent: Annotated[Number, Gt(0)] = 1.5
-    contact_stiffness: Annotated[Number, Gt(0)] | None = None  # K [N/m^exponent]
+    contact_stiffness: Annotated[Number, Gt(0), BeforeValidator(_plain_stiffness)] | None = None
     min_impact_speed: PositiveSpeed = 1e-3
     contact_tolerance: PositiveLength = 1e-10
     friction_law: Annotated[str, one_of(FRICTION_LAWS, "friction law")] = "ambrosio"
@@ -90,8 +99,14 @@ class Clearance(Table):
         problems = [*self._unused_keys(), *self._missing_keys()]
         if self.journal_radius >= self.bearing_radius:
             problems.append(
-                f"journal_radius {self.journal_radius:g} m must be smaller than bearing_radius "
-                f"{self.bearing_radius:g} m (the radial clearance is their difference)"
+                f"journal_radius {self.journal_radius * 1e3:.12g} mm must be smaller than "
+                f"bearing_radius {self.bearing_radius * 1e3:.12g} mm (the radial clearance is "
+                "their difference)"
+            )
+        elif self.contact_tolerance >= self.radial_clearance:
+            problems.append(
+                f"contact_tolerance {self.contact_tolerance:g} m must be much smaller than the "
+                f"radial clearance {self.radial_clearance:g} m (default 1e-10 m)"
             )
         ambrosio = self.friction_law == "ambrosio"
         if ambrosio and self.full_friction_speed <= self.no_friction_speed:

@@ -25,13 +25,19 @@ STILL_ANGLE = 1e-6  # [rad] a body whose angle spans less does not rotate (a sli
 CLEARANCE_COLOR = "tab:red"
 IDEAL_COLOR = "0.15"
 SURFACES = ("journal", "bearing")  # the paper's Figs. 8-10 show the journal first
+CLEARANCE_FIGURES = (
+    "fig7_dynamics",
+    "fig7d_orbit",
+    "fig8_wear_sectors",
+    "fig9_wear_polar",
+    "fig10_profile",
+)  # the file names (.png) save_clearance_figures writes
 MM = 1e3  # [mm/m]
 UM = 1e6  # [µm/m]
 
 
-def _clearance_joints(results: Results) -> list[RevoluteJoint]:
-    names = results.summary.get("clearance_joints", {})
-    return [joint for joint in results.model.joints if joint.name in names]
+def _clearance_joints(results: Results) -> tuple[RevoluteJoint, ...]:
+    return results.model.clearance_joints
 
 
 def _surface_body(joint: RevoluteJoint, surface: str) -> str:
@@ -193,6 +199,8 @@ def _mark_peak(ax: Axes, results: Results, joint: str, surface: str) -> None:
     entry = results.summary["clearance_joints"][joint]
     depth = entry[f"max_wear_depth_{surface}_m"] * UM
     angle = entry[f"max_wear_angle_{surface}_deg"]
+    if angle is None:  # no wear on this surface
+        return
     ax.annotate(
         f"max {depth:.3g} µm at {angle:g}°",
         (angle, depth),
@@ -341,13 +349,13 @@ def save_clearance_figures(
         return []
     path = Path(folder)
     path.mkdir(parents=True, exist_ok=True)
-    figures = {
-        "fig7_dynamics": lambda r: plot_dynamics(r, ideal),
-        "fig7d_orbit": plot_orbit,
-        "fig8_wear_sectors": plot_wear_sectors,
-        "fig9_wear_polar": plot_wear_polar,
-        "fig10_profile": plot_wear_profile,
-    }
+    figures = dict(zip(CLEARANCE_FIGURES, (
+        lambda r: plot_dynamics(r, ideal),
+        plot_orbit,
+        plot_wear_sectors,
+        plot_wear_polar,
+        plot_wear_profile,
+    ), strict=True))  # fmt: skip
     written = []
     for name, draw in figures.items():
         draw(results).savefig(path / f"{name}.png", dpi=150)

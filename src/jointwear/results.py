@@ -77,10 +77,12 @@ class Results:
         self.timeseries.to_csv(path / "timeseries.csv", index=False, float_format="%.12g")
         self.timeseries.to_parquet(path / "timeseries.parquet", index=False)
         self.events.to_csv(path / "events.csv", index=False, float_format="%.12g")
-        if self.has_clearance:
-            for name in _CLEARANCE_TABLES:
+        for name in _CLEARANCE_TABLES:
+            if self.has_clearance:
                 table = getattr(self, name)
                 table.to_csv(path / f"{name}.csv", index=False, float_format="%.12g")
+            else:  # an earlier run's, with clearance joints
+                (path / f"{name}.csv").unlink(missing_ok=True)
         _write_text(path / "summary.json", json.dumps(self.summary, indent=2))  # last: complete
         return path
 
@@ -100,15 +102,17 @@ def load_results(folder: str | os.PathLike) -> Results:
     """Read a results folder written by ``Results.save``."""
     path = Path(folder)
     model_data = json.loads((path / "model.json").read_text())
-    tables = {
-        name: pd.read_csv(path / f"{name}.csv", dtype=_FLOAT_COLUMNS)
-        for name in _CLEARANCE_TABLES
-        if (path / f"{name}.csv").exists()
-    }
+    summary = json.loads((path / "summary.json").read_text())
+    tables = {}
+    if "clearance_joints" in summary:
+        tables = {
+            name: pd.read_csv(path / f"{name}.csv", dtype=_FLOAT_COLUMNS)
+            for name in _CLEARANCE_TABLES
+        }
     return Results(
         model=parse_model(model_data),
         timeseries=pd.read_parquet(path / "timeseries.parquet"),
         events=pd.read_csv(path / "events.csv"),
-        summary=json.loads((path / "summary.json").read_text()),
+        summary=summary,
         **tables,
     )

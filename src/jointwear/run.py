@@ -44,7 +44,9 @@ def run(
     Returns
     -------
     Results
-        Those of the model as given (with its clearance joints).
+        Those of the model as given (with its clearance joints). With a companion run, the
+        summary's ``ideal_comparison`` gives its folder and status; one that did not finish
+        (e.g. interrupted) is neither saved nor drawn.
     """
     model = load_model(model_path, overrides)
     folder = Path(out)
@@ -53,8 +55,12 @@ def run(
     companion = None
     if ideal and model.has_clearance and results.status == "success":
         companion = simulate(model.ideal())
+        results.summary["ideal_comparison"] = {"folder": IDEAL_FOLDER, "status": companion.status}
+        if companion.status != "success":
+            companion = None
     with stop_requests():  # a Ctrl-C now must not leave a half-written folder
         results.save(folder)
+        _remove_companion(folder / IDEAL_FOLDER)  # an earlier run's: never mix two runs
         if companion is not None:
             companion.save(folder / IDEAL_FOLDER)
         if figures and len(results.timeseries) > 1:
@@ -62,6 +68,17 @@ def run(
 
             save_figures(results, folder / "figures", ideal=companion)
     return results
+
+
+def _remove_companion(folder: Path) -> None:
+    """Remove an earlier companion results folder (only files a results folder holds)."""
+    if not (folder / "model.json").is_file():
+        return
+    for file in folder.iterdir():
+        if file.is_file() and file.suffix in (".json", ".csv", ".parquet"):
+            file.unlink()
+    if not any(folder.iterdir()):
+        folder.rmdir()
 
 
 def _check_folder(folder: Path) -> None:

@@ -122,9 +122,8 @@ def column_names(model: Model) -> list[str]:
         names += [f"{c}_{body.name}" for c in BODY_COLUMNS]
     for driver in model.drivers:
         names.append(f"{'torque' if driver.type == 'angle' else 'force'}_{driver.name}")
-    ideal = [j for j in model.joints if not has_clearance(j)]
-    clearance = [j for j in model.joints if has_clearance(j)]
-    for joint in ideal:
+    clearance = model.clearance_joints
+    for joint in (j for j in model.joints if j not in clearance):
         names += [f"{joint.name}_fx", f"{joint.name}_fy"]
     for joint in clearance:
         names += [f"{joint.name}_{c}" for c in CLEARANCE_COLUMNS]
@@ -210,11 +209,6 @@ def _clearance_row(clearance: Clearance) -> tuple[list[int], NDArray[np.float64]
     return law, param
 
 
-def has_clearance(joint: object) -> bool:
-    """Whether a model joint is a clearance joint."""
-    return getattr(joint, "clearance", None) is not None
-
-
 def build_system(model: Model, *, ideal: bool = False) -> System:
     """Build the kernel arrays of ``model`` (validated, SI).
 
@@ -237,11 +231,13 @@ def build_system(model: Model, *, ideal: bool = False) -> System:
 
     functions = _Functions()
     joints = {"kind": [], "body": [], "point": [], "axis": [], "angle0": [], "row": []}
+    clearances = model.clearance_joints
+    kernel_index: dict[str, int] = {}  # ideal joints: row of the kernels' joint table
     clear = {"body": [], "point": [], "law": [], "param": [], "sectors": []}
     row = 0
     for joint in model.joints:
         b1, b2 = joint.bodies
-        if has_clearance(joint) and not ideal:
+        if joint in clearances and not ideal:
             law, param = _clearance_row(joint.clearance)
             clear["body"].append([index[b1], index[b2]])
             clear["point"].append([local(b1, joint.points[0]), local(b2, joint.points[1])])
@@ -249,6 +245,7 @@ def build_system(model: Model, *, ideal: bool = False) -> System:
             clear["param"].append(param)
             clear["sectors"].append(joint.clearance.sectors)
             continue
+        kernel_index[joint.name] = len(joints["kind"])
         joints["kind"].append(int(joint.kind))
         joints["body"].append([index[b1], index[b2]])
         joints["point"].append([local(b1, joint.points[0]), local(b2, joint.points[1])])
@@ -257,7 +254,6 @@ def build_system(model: Model, *, ideal: bool = False) -> System:
         joints["angle0"].append(pose[b2][2] - pose[b1][2])
         joints["row"].append(row)
         row += 2
-    joint_index = {j.name: i for i, j in enumerate(model.joints)}
 
     drivers = {"kind": [], "body": [], "joint": [], "function": [], "row": []}
     for driver in model.drivers:
@@ -268,7 +264,7 @@ def build_system(model: Model, *, ideal: bool = False) -> System:
             drivers["body"].append([index[i], index[j]])
             drivers["joint"].append(-1)
         else:
-            joint = model.joints[joint_index[driver.joint]]
+            joint = model.joint(driver.joint)
             b1, b2 = joint.bodies
             axis = np.array(joint.axis, dtype=float)
             c, s = np.cos(pose[b1][2]), np.sin(pose[b1][2])
@@ -277,7 +273,7 @@ def build_system(model: Model, *, ideal: bool = False) -> System:
             initial = float(slide @ axis_global / np.linalg.norm(axis))
             drivers["kind"].append(int(DriverKind.DISTANCE))
             drivers["body"].append([GROUND, GROUND])
-            drivers["joint"].append(joint_index[driver.joint])
+            drivers["joint"].append(kernel_index[driver.joint])
         drivers["function"].append(functions.add_spec(driver.function, initial))
         drivers["row"].append(row)
         row += 1
