@@ -62,7 +62,7 @@ def _loop_state(
     # A step logs at most one crossing per event and one onset per joint: room for many steps.
     events = max(EVENT_CAPACITY, 16 * n_events)
     impacts = max(EVENT_CAPACITY, 16 * nc)
-    state = ("y_pred", "yp_pred", "y_corr", "yp_corr", "y_scratch", "yp_scratch", "y_cut")
+    state = ("y_pred", "yp_pred", "y_corr", "yp_corr", "y_scratch", "yp_scratch", "y_cut", "y_mid")
     return loop.LoopState(
         counters=np.zeros(N_COUNTERS, dtype=np.int64),
         max_violation=np.zeros(1),

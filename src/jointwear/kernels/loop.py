@@ -66,6 +66,7 @@ class LoopState(NamedTuple):
     event_index: np.ndarray  # (cap,) int64 event number
     event_rising: np.ndarray  # (cap,) int64 1 rising, 0 falling
     y_cut: np.ndarray  # (N,) state where a step is cut at a contact onset or separation
+    y_mid: np.ndarray  # (N,) state at the middle of the step (or of its part before a cut)
     t_old: np.ndarray  # (1,) start of the step being taken [s] (with clearance joints)
     y_old: np.ndarray  # (N,) state there
     yp_old: np.ndarray  # (N,) its derivative
@@ -289,6 +290,8 @@ def _log_events(sys, ctl, ls, dp, ab, wk, t_old, t_new, y_new):
 def _contact_cut(sys, ctl, ls, dp, ab, wk, t_old, t_new, y_new):
     """Earliest change of contact inside the step just accepted [s], or t_new if there is none.
 
+    Also returns whether ls.y_mid now holds the state at the step's midpoint.
+
     - Onset: a joint in free flight penetrates past the tolerance at the step end; located to
       within the tolerance in penetration, from the state before the step (ls.y_old: the
       Adams interpolant is not exact at the start of its step).
@@ -314,15 +317,15 @@ def _contact_cut(sys, ctl, ls, dp, ab, wk, t_old, t_new, y_new):
         if g1 + tol <= 0.0:
             continue  # the period ends at the step end
         if not midpoint_known:
-            contact_state(ctl, ls, dp, ab, t_mid, ls.y_cut)
+            contact_state(ctl, ls, dp, ab, t_mid, ls.y_mid)
             midpoint_known = True
-        depth_mid = penetration_excess(sys, wk, k, ls.y_cut) + tol
+        depth_mid = penetration_excess(sys, wk, k, ls.y_mid) + tol
         if depth_mid <= 0.0:
             depth_old = penetration_excess(sys, wk, k, ls.y_old) + tol  # > 0 in a period
             e = n_user + nc + k
             t_gap = _locate(sys, ctl, ls, dp, ab, wk, e, t_old, depth_old, t_mid, depth_mid, tol)
             t_first = min(t_first, t_gap)
-    return t_first
+    return t_first, midpoint_known
 
 
 @njit(cache=True)
@@ -350,14 +353,17 @@ def _after_step(sys, ctl, ls, dp, ab, wk, out, rows, t_old, h):
     t_new = current_time(ctl, dp, ab)
     y_new = current_state(ctl, dp, ab)
     nc = sys.clearance_body.shape[0]
-    t_cut = _contact_cut(sys, ctl, ls, dp, ab, wk, t_old, t_new, y_new) if nc else t_new
+    t_cut, midpoint_known = t_new, False
+    if nc:
+        t_cut, midpoint_known = _contact_cut(sys, ctl, ls, dp, ab, wk, t_old, t_new, y_new)
     if t_cut < t_new:
         contact_state(ctl, ls, dp, ab, t_cut, ls.y_cut)
     else:
         ls.y_cut[:] = y_new
     if nc:
-        contact_state(ctl, ls, dp, ab, 0.5 * (t_old + t_cut), ls.y_scratch)
-        accumulate_step(sys, ctl, ls, wk, t_old, t_cut, ls.y_scratch)
+        if t_cut < t_new or not midpoint_known:
+            contact_state(ctl, ls, dp, ab, 0.5 * (t_old + t_cut), ls.y_mid)
+        accumulate_step(sys, ctl, ls, wk, t_old, t_cut, ls.y_mid)
     _log_events(sys, ctl, ls, dp, ab, wk, t_old, t_cut, ls.y_cut)
     # The step's rows see the contact periods as the step did, before they open or close.
     rows, ok = _write_rows(sys, ctl, ls, dp, ab, wk, out, rows, t_cut)
