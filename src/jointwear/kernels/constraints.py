@@ -26,7 +26,7 @@ def _add(cq, r, b, k, value):
         cq[r, 3 * b + k] += value
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _revolute(q, qd, i, j, s, r, phi, cq, gamma):
     aix, aiy = rotate(q, i, s[0, 0], s[0, 1])
     ajx, ajy = rotate(q, j, s[1, 0], s[1, 1])
@@ -48,7 +48,7 @@ def _revolute(q, qd, i, j, s, r, phi, cq, gamma):
     gamma[r + 1] = aiy * wi2 - ajy * wj2
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def line_projection(q, qd, i, j, s, vx, vy, r, phi, cq, gamma):
     """Row r: f = (A_i v) . (r_Pj - r_Pi), the second point projected on a body-i direction v.
 
@@ -81,7 +81,7 @@ def line_projection(q, qd, i, j, s, vx, vy, r, phi, cq, gamma):
     gamma[r] = -rest
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def evaluate_constraints(t, q, qd, sys, phi, cq, gamma, phi_t):
     """Fill Phi, Phi_q, gamma and Phi_t for all joints and drivers of the system."""
     cq[:, :] = 0.0

@@ -36,14 +36,14 @@ def _apply(q, g, b, sx, sy, fx, fy):
     g[3 * b + 2] += ax * fy - ay * fx
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _function_value(sys, fn, t):
     if fn < 0:
         return 0.0
     return evaluate(sys.function_kind[fn], sys.function_param[fn], t)[0]
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _spring_axis(q, sys, e):
     """Unit vector u from point 1 to point 2 of load e, and the length between them [m]."""
     s = sys.force_point[e]
@@ -57,7 +57,7 @@ def _spring_axis(q, sys, e):
     return dx / length, dy / length, length
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _spring_rate(q, qd, sys, e, ux, uy):
     """Rate of change of the length between the two points of load e [m/s]."""
     s = sys.force_point[e]
@@ -66,7 +66,7 @@ def _spring_rate(q, qd, sys, e, ux, uy):
     return ux * (v2x - v1x) + uy * (v2y - v1y)
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def applied_forces(t, q, qd, sys, g):
     """Fill g [N, N, N m] with gravity and every applied load at time t [s]."""
     nb = sys.mass.shape[0]

@@ -68,7 +68,7 @@ C_FY = 11
 N_CONTACT = 12
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def evaluate_contact(q, qd, sys, wk, k):
     """Geometry and forces of clearance joint k at state (q, q'), into wk.contact[k]."""
     p = sys.clearance_param[k]
@@ -112,7 +112,7 @@ def evaluate_contact(q, qd, sys, wk, k):
     out[C_FY] = -f_n * ny + f_t * nx
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def contact_forces(q, qd, sys, wk, g):
     """Evaluate every clearance joint and add its contact forces to g [N, N, N m]."""
     for k in range(sys.clearance_body.shape[0]):

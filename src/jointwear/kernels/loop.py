@@ -22,6 +22,7 @@ import numpy as np
 from numba import njit
 
 from . import abm, dopri5
+from .borrow import borrow
 from .codes import Counter, EventDirection, Method, Status
 from .contact_steps import accumulate_step, begin_periods, penetration_excess
 from .dynamics import constraint_norm, rhs
@@ -395,6 +396,8 @@ def advance(sys, ctl, ls, dp, ab, wk, out, t_stop, step_stop):
     Steps are never shortened to land on t_stop, only on the end time, so the solution does
     not depend on how the run is cut into chunks.
     """
+    sys, ctl, ls, wk = borrow(sys), borrow(ctl), borrow(ls), borrow(wk)  # kernels.borrow
+    dp, ab = borrow(dp), borrow(ab)
     rows = 0
     n_events = ls.event_prev.shape[0]
     nc = sys.clearance_body.shape[0]
