@@ -24,6 +24,9 @@ from .model_clearance import Clearance
 from .results import load_results
 from .run import IDEAL_FOLDER
 from .run import run as run_model
+from .sweep import CaseReport
+from .sweep import sweep as run_sweep
+from .sweep_cases import make_plan
 from .system import build_system
 
 app = typer.Typer(add_completion=False, no_args_is_help=True, help=__doc__.splitlines()[0])
@@ -221,3 +224,109 @@ def plot(
     figures = save_figures(load_results(folder), folder / "figures", ideal, animation=animation)
     for path in figures:
         out.print(str(path), soft_wrap=True)
+
+
+class _SweepProgress:
+    """Cases done: a progress bar on a terminal, else a line per case on stderr."""
+
+    def __init__(self) -> None:
+        self.bar: Progress | None = None
+        self.task = 0
+
+    def __call__(self, report: CaseReport, done: int, total: int) -> None:
+        if report.skipped:
+            line = f"[{done}/{total}] {report.case}: finished before, skipped"
+        else:
+            outcome = report.status + (f" ({report.error})" if report.error else "")
+            line = f"[{done}/{total}] {report.case}: {outcome}, {report.wall_s:.3g} s"
+        if not err.is_terminal:
+            err.print(line, markup=False, highlight=False, soft_wrap=True)
+            return
+        if self.bar is None:
+            self.bar = Progress(
+                TextColumn("sweep"),
+                BarColumn(),
+                TextColumn("{task.completed}/{task.total} cases"),
+                TimeElapsedColumn(),
+                TextColumn("ETA"),
+                TimeRemainingColumn(),
+                console=err,
+                transient=True,
+            )
+            self.bar.start()
+            self.task = self.bar.add_task("sweep", total=total)
+        self.bar.console.print(line, markup=False, highlight=False, soft_wrap=True)
+        self.bar.update(self.task, completed=done)
+
+    def close(self) -> None:
+        if self.bar is not None:
+            self.bar.stop()
+
+
+@app.command()
+def sweep(
+    model: ModelPath,
+    out_dir: Annotated[Path, typer.Option("--out", help="Sweep folder.", show_default=False)],
+    vary: Annotated[
+        list[str] | None,
+        typer.Option(
+            "--vary", help="Vary a model value: dotted.path=V1,V2,... (repeatable; all combined)."
+        ),
+    ] = None,
+    sweep_file: Annotated[
+        Path | None,
+        typer.Option("--file", help="Sweep file: TOML with [vary] (path = [values]) and [set]."),
+    ] = None,
+    overrides: Overrides = None,
+    t_end: Annotated[float | None, typer.Option("--t-end", help="End time [s].")] = None,
+    cycles: Annotated[
+        int | None, typer.Option("--cycles", help="Long-life wear runs of N cycles per case.")
+    ] = None,
+    scheduler: Annotated[
+        str | None, typer.Option("--scheduler", help="Dask scheduler address (tcp://host:8786).")
+    ] = None,
+    workers: Annotated[
+        int | None, typer.Option("--workers", help="Local processes [default: one per core].")
+    ] = None,
+    figures: Annotated[
+        bool, typer.Option("--figures/--no-figures", help="Draw comparison figures.")
+    ] = True,
+) -> None:
+    """Run MODEL for every combination of the varied values; tabulate and compare the cases.
+
+    OUT gets cases/<case>/ (a results folder per case), sweep.csv and sweep.parquet (one row
+    per case) and figures/. Running the same sweep again skips the cases already finished.
+    """
+    settings = list(overrides or [])
+    if t_end is not None:
+        settings.append(f"solver.t_end={t_end!r}")
+    bar = _SweepProgress()
+    try:
+        plan = make_plan(vary or [], sweep_file, settings)
+        results = run_sweep(
+            model,
+            out_dir,
+            vary=plan.vary,
+            overrides=plan.overrides,
+            cycles=cycles,
+            scheduler=scheduler,
+            workers=workers,
+            figures=figures,
+            progress=bar,
+        )
+    except ModelError as error:
+        raise _fail(error) from None
+    finally:
+        bar.close()
+    table = results.table
+    counts = table["status"].value_counts()
+    tally = ", ".join(f"{n} {status}" for status, n in counts.items())
+    skipped = f" ({len(results.skipped)} finished before)" if results.skipped else ""
+    out.print(f"{len(table)} cases{skipped}: {tally}", soft_wrap=True, highlight=False)
+    for _, row in table[table["status"] != "success"].iterrows():
+        out.print(f"{row['case']}: {row['status']}: {row['error']}", soft_wrap=True, markup=False)
+    out.print(f"table in {out_dir / 'sweep.csv'} and sweep.parquet", soft_wrap=True)
+    if results.interrupted:
+        err.print("interrupted: the table holds the cases finished so far", soft_wrap=True)
+    if results.failed:
+        raise typer.Exit(code=1)
