@@ -78,9 +78,12 @@ def impact_rows(
 
 
 def joint_summaries(
-    model: Model, totals: NDArray[np.float64], wear: NDArray[np.float64], t_reached: float
+    model: Model, totals: NDArray[np.float64], wear: NDArray[np.float64], duration: float
 ) -> dict[str, dict]:
-    """Per clearance joint: contact, impact, wear and energy figures (SI units in the keys)."""
+    """Per clearance joint: contact, impact, wear and energy figures (SI units in the keys).
+
+    ``duration`` [s] is the simulated time the totals were gathered over.
+    """
     summaries = {}
     for k, joint in enumerate(model.clearance_joints):
         c = joint.clearance
@@ -88,7 +91,7 @@ def joint_summaries(
         entry = {
             "radial_clearance_m": c.radial_clearance,
             "max_contact_force_n": row[cs.T_MAX_FN],
-            "contact_time_fraction": row[cs.T_CONTACT_TIME] / t_reached if t_reached else 0.0,
+            "contact_time_fraction": row[cs.T_CONTACT_TIME] / duration if duration else 0.0,
             "impacts": int(row[cs.T_IMPACTS]),
             "max_penetration_m": row[cs.T_MAX_DELTA],
             "worn_volume_m3": row[cs.T_WORN_VOLUME],

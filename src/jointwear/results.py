@@ -17,9 +17,12 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 import pandas as pd
+import pyarrow as pa
+from pyarrow import csv
 
 from .kernels.codes import Status
 from .model import Model, parse_model
+from .run_state import RunState
 
 _MESSAGES = {
     Status.RUNNING: "stopped between chunks",
@@ -52,6 +55,7 @@ class Results:
     wear: pd.DataFrame = field(default_factory=pd.DataFrame)
     wear_snapshots: pd.DataFrame = field(default_factory=pd.DataFrame)
     impacts: pd.DataFrame = field(default_factory=pd.DataFrame)
+    final: RunState | None = None  # where the run ended (None once loaded from a folder)
 
     @property
     def has_clearance(self) -> bool:
@@ -74,13 +78,12 @@ class Results:
         path.mkdir(parents=True, exist_ok=True)
         (path / "summary.json").unlink(missing_ok=True)  # until rewritten, not a complete folder
         _write_text(path / "model.json", self.model.model_dump_json(indent=2))
-        self.timeseries.to_csv(path / "timeseries.csv", index=False, float_format="%.12g")
+        _write_csv(self.timeseries, path / "timeseries.csv")
         self.timeseries.to_parquet(path / "timeseries.parquet", index=False)
-        self.events.to_csv(path / "events.csv", index=False, float_format="%.12g")
+        _write_csv(self.events, path / "events.csv")
         for name in _CLEARANCE_TABLES:
             if self.has_clearance:
-                table = getattr(self, name)
-                table.to_csv(path / f"{name}.csv", index=False, float_format="%.12g")
+                _write_csv(getattr(self, name), path / f"{name}.csv")
             else:  # an earlier run's, with clearance joints
                 (path / f"{name}.csv").unlink(missing_ok=True)
         _write_text(path / "summary.json", json.dumps(self.summary, indent=2))  # last: complete
@@ -89,6 +92,18 @@ class Results:
 
 _CLEARANCE_TABLES = ("wear", "wear_snapshots", "impacts")
 _FLOAT_COLUMNS = {"angle_deg": float, "depth_m": float, "time_s": float}  # "5" is still 5.0
+
+
+def _write_csv(table: pd.DataFrame, path: Path) -> None:
+    """Write ``table`` as CSV, numbers in their shortest exact form.
+
+    pyarrow's writer is ten times faster than pandas' on a time series.
+    """
+    csv.write_csv(
+        pa.Table.from_pandas(table, preserve_index=False),
+        path,
+        csv.WriteOptions(quoting_style="needed"),
+    )
 
 
 def _write_text(path: Path, text: str) -> None:

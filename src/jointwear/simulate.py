@@ -32,6 +32,7 @@ from .kernels.contact_steps import N_IMPACT_INFO, N_TOTALS
 from .kernels.dopri5 import make_dopri5_state
 from .model import Model
 from .results import Results, status_message
+from .run_state import RunState
 from .system import System, build_system, column_names, make_work
 
 CHUNK_WALL_S = 0.2  # target wall time of one compiled chunk [s]
@@ -41,18 +42,18 @@ SNAPSHOTS_BY_DEFAULT = 5  # wear snapshots over the run unless wear_snapshot_int
 Progress = Callable[[float, float], None]  # (simulated time reached, end time) [s]
 
 
-def _output_times(t_end: float, interval: float) -> np.ndarray:
-    count = math.floor(t_end / interval * (1.0 + 1e-12)) + 1
-    times = np.minimum(np.arange(count) * interval, t_end)  # 3 * 0.1 must not pass 0.3
-    if t_end - times[-1] > 1e-9 * interval:
-        times = np.append(times, t_end)
-    return times
+def _output_times(t0: float, duration: float, interval: float) -> np.ndarray:
+    count = math.floor(duration / interval * (1.0 + 1e-12)) + 1
+    times = np.minimum(np.arange(count) * interval, duration)  # 3 * 0.1 must not pass 0.3
+    if duration - times[-1] > 1e-9 * interval:
+        times = np.append(times, duration)
+    return t0 + times
 
 
-def _snapshot_times(t_end: float, interval: float | None) -> np.ndarray:
-    interval = interval or t_end / SNAPSHOTS_BY_DEFAULT
-    count = math.floor(t_end / interval * (1.0 + 1e-12))
-    return np.minimum(np.arange(1, count + 1) * interval, t_end)
+def _snapshot_times(t0: float, duration: float, interval: float | None) -> np.ndarray:
+    interval = interval or duration / SNAPSHOTS_BY_DEFAULT
+    count = math.floor(duration / interval * (1.0 + 1e-12))
+    return t0 + np.minimum(np.arange(1, count + 1) * interval, duration)
 
 
 def _loop_state(
@@ -82,8 +83,10 @@ def _loop_state(
     )
 
 
-def simulate(model: Model, *, progress: Progress | None = None) -> Results:
-    """Simulate ``model`` from its assembled initial pose to ``model.solver.t_end``.
+def simulate(
+    model: Model, *, progress: Progress | None = None, initial: RunState | None = None
+) -> Results:
+    """Simulate ``model`` for ``model.solver.t_end`` seconds.
 
     Parameters
     ----------
@@ -91,6 +94,11 @@ def simulate(model: Model, *, progress: Progress | None = None) -> Results:
         A validated model (``load_model``).
     progress
         Called after every chunk with the time reached and the end time [s].
+    initial
+        Where to start: by default the assembled initial pose at t = 0 with every journal
+        centred and unworn; or the state another run of the same model ended in
+        (``Results.final``), possibly with other worn profiles (``RunState.with_wear``). The
+        run then goes on from ``initial.time`` to ``initial.time + t_end``.
 
     Returns
     -------
@@ -102,18 +110,20 @@ def simulate(model: Model, *, progress: Progress | None = None) -> Results:
     system = build_system(model)
     assembly = assemble(model, build_system(model, ideal=True))  # journals centred
     n_state = assembly.y0.shape[0]
-    output_times = _output_times(solver.t_end, solver.output_interval)
+    t0 = 0.0 if initial is None else initial.time
+    t_end = t0 + solver.t_end
+    output_times = _output_times(t0, solver.t_end, solver.output_interval)
     ctl = loop.Control(
         method=int(solver.method),
         rtol=solver.rtol,
         atol=solver.atol,
         min_step=solver.min_step,
         max_step=solver.max_step,
-        t_end=solver.t_end,
+        t_end=t_end,
         max_steps=solver.max_steps,
         output_times=output_times,
         rows_per_step=math.ceil(solver.max_step / solver.output_interval) + 2,
-        snapshot_times=_snapshot_times(solver.t_end, solver.wear_snapshot_interval),
+        snapshot_times=_snapshot_times(t0, solver.t_end, solver.wear_snapshot_interval),
     )
     dp, ab, wk = make_dopri5_state(n_state), make_abm_state(n_state), make_work(system)
     ls = _loop_state(
@@ -126,9 +136,17 @@ def simulate(model: Model, *, progress: Progress | None = None) -> Results:
     blocks: list[np.ndarray] = []
     events: list[tuple[float, str, str]] = []
 
+    y0 = assembly.y0
+    if initial is not None:
+        _check_initial(initial, y0, wk.wear)
+        y0 = initial.y
+        wk.wear[:] = initial.wear
+        wk.contact_on[:] = initial.contact_on
+        wk.impact_speed[:] = initial.impact_speed
+
     wall_start = time.perf_counter()
     status = Status.RUNNING
-    if not loop.start(system, ctl, ls, dp, ab, wk, 0.0, assembly.y0, solver.initial_step):
+    if not loop.start(system, ctl, ls, dp, ab, wk, t0, y0, solver.initial_step):
         status = Status.SINGULAR
     chunk = min(solver.t_end, MIN_CHUNK_STEPS * solver.max_step)
     budget = MIN_CHUNK_STEPS  # steps a chunk may take, so a stalled run still hands back
@@ -153,7 +171,7 @@ def simulate(model: Model, *, progress: Progress | None = None) -> Results:
             ls.counters[Counter.IMPACTS] = 0
             t_now = loop.current_time(ctl, dp, ab)
             if progress is not None:
-                progress(t_now, solver.t_end)
+                progress(t_now - t0, solver.t_end)
             if stop_requested[0] and status == Status.RUNNING:
                 status = Status.INTERRUPTED
             elapsed = time.perf_counter() - chunk_start
@@ -165,6 +183,13 @@ def simulate(model: Model, *, progress: Progress | None = None) -> Results:
                     chunk = min(max(rate * CHUNK_WALL_S, 1e-9 * solver.t_end), 10 * chunk)
     wall = time.perf_counter() - wall_start
     t_reached = float(loop.current_time(ctl, dp, ab))
+    final = RunState(
+        time=t_reached,
+        y=loop.current_state(ctl, dp, ab).copy(),
+        wear=wk.wear.copy(),
+        contact_on=wk.contact_on.copy(),
+        impact_speed=wk.impact_speed.copy(),
+    )
 
     data = np.concatenate(blocks) if blocks else np.zeros((0, len(columns)))
     stats = {
@@ -194,11 +219,23 @@ def simulate(model: Model, *, progress: Progress | None = None) -> Results:
         "stats": stats,
     }
     if joint_names:
-        summary["clearance_joints"] = joint_summaries(model, ls.contact_totals, wk.wear, t_reached)
+        summary["clearance_joints"] = joint_summaries(
+            model, ls.contact_totals, wk.wear, t_reached - t0
+        )
     return Results(
         model=model,
         timeseries=pd.DataFrame(data, columns=columns),
         events=pd.DataFrame(events, columns=["time", "event", "direction"]),
         summary=summary,
+        final=final,
         **tables,
     )
+
+
+def _check_initial(initial: RunState, y0: np.ndarray, wear: np.ndarray) -> None:
+    """Refuse a starting state that does not fit the model."""
+    for name, given, expected in (("y", initial.y, y0), ("wear", initial.wear, wear)):
+        if given.shape != expected.shape:
+            raise ValueError(
+                f"initial.{name} has shape {given.shape}; this model needs {expected.shape}"
+            )
