@@ -1,0 +1,28 @@
+"""The benchmark script runs end to end on a tiny case (its timings are not checked here)."""
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+BENCH = Path(__file__).parents[1] / "benchmarks" / "bench.py"
+
+
+def test_benchmark_runs_on_a_short_case(tmp_path):
+    out = tmp_path / "bench.json"
+    args = ["--t-end", "0.01", "--repeats", "1", "--no-cold", "--out", str(out)]
+    args += ["--growth-times", "0.005,0.01", "--growth-t-end", "0.005"]
+    done = subprocess.run(
+        [sys.executable, str(BENCH), *args], capture_output=True, text=True, timeout=600
+    )
+    assert done.returncode == 0, done.stderr
+    report = json.loads(out.read_text())
+    rows = {row["integrator"]: row for row in report["integrators"]}
+    assert set(rows) == {"dopri5", "abm"}
+    for row in rows.values():
+        assert row["accepted_steps"] > 0 and row["rhs_evaluations"] > row["accepted_steps"]
+        # The baseline solves the same case: same wear to a few per cent even this early.
+        assert row["wear_profile_difference"] < 0.05
+        assert row["max_force_difference"] < 0.05
+    assert [r["t_end"] for r in report["growth"]["simulated_time"]] == [0.005, 0.01]
+    assert [r["clearance_joints"] for r in report["growth"]["clearance_joints"]] == [1, 2, 4]
