@@ -319,8 +319,9 @@ def sweep(
     finally:
         bar.close()
     table = results.table
-    counts = table["status"].value_counts()
-    tally = ", ".join(f"{n} {status}" for status, n in counts.items())
+    counts = table["status"].value_counts(sort=False)  # in the order the cases come
+    order = sorted(counts.index, key=lambda status: status != "success")
+    tally = ", ".join(f"{counts[status]} {status}" for status in order)
     skipped = f" ({len(results.skipped)} finished before)" if results.skipped else ""
     out.print(f"{len(table)} cases{skipped}: {tally}", soft_wrap=True, highlight=False)
     for _, row in table[table["status"] != "success"].iterrows():

@@ -225,7 +225,7 @@ def run_dask(
             client.submit(run_case, task, key=f"jointwear-{task.case}-{stamp}"): task
             for task in tasks
         }
-        finished = as_completed(futures)
+        finished = as_completed(futures, loop=client.loop)
         while not finished.is_empty():
             if stop[0]:
                 client.cancel([f for f in futures if not f.done()])

@@ -1,0 +1,392 @@
+"""Parameter studies: ``jointwear sweep`` and ``jointwear.sweep.sweep``.
+
+Short runs (0.01 s, a quarter crank turn) of the paper's four-bar: what is checked is the
+bookkeeping (cases, names, table, skipping, failures, interruption, the Dask path), not the
+physics.
+"""
+
+import importlib
+import json
+import os
+import shutil
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pandas as pd
+import pytest
+from typer.testing import CliRunner
+
+import jointwear as jw
+from jointwear.cli import app
+from jointwear.model_errors import ModelError
+from jointwear.sweep import sweep
+from jointwear.sweep_cases import make_cases, make_plan, parse_vary, si_value
+
+ROOT = Path(__file__).parents[1]
+FOURBAR = ROOT / "examples" / "flores2009_fourbar.toml"
+FRICTION = "joints.coupler_follower.clearance.friction_coefficient"
+RADIUS = "joints.coupler_follower.clearance.bearing_radius"
+VARY = [f"{FRICTION}=0.05,0.1", f"{RADIUS}=10.0 mm,10.1 mm"]
+T_END = "0.01"
+CASES = [
+    "friction_coefficient=0.05__bearing_radius=10.0_mm",
+    "friction_coefficient=0.05__bearing_radius=10.1_mm",
+    "friction_coefficient=0.1__bearing_radius=10.0_mm",
+    "friction_coefficient=0.1__bearing_radius=10.1_mm",
+]
+HEADLINE = (
+    "max_contact_force_n",
+    "contact_time_fraction",
+    "impacts",
+    "max_penetration_m",
+    "max_wear_depth_journal_m",
+    "max_wear_depth_bearing_m",
+    "worn_volume_m3",
+)
+WALL_COLUMNS = ["wall_s", "simulation_wall_s"]  # differ from run to run
+NARROW = {"COLUMNS": "60"}  # a one-line message must stay on one line
+
+
+def invoke(*args: object, env: dict | None = None):
+    return CliRunner().invoke(app, ["sweep", *(str(a) for a in args)], env=env)
+
+
+def sweep_args(out: Path, *extra: object) -> list[object]:
+    vary = [arg for v in VARY for arg in ("--vary", v)]
+    return [FOURBAR, "--out", out, *vary, "--t-end", T_END, *extra]
+
+
+def mtimes(folder: Path) -> dict[str, int]:
+    return {p.parent.name: p.stat().st_mtime_ns for p in folder.glob("cases/*/summary.json")}
+
+
+@pytest.fixture(scope="module")
+def local_sweep(tmp_path_factory):
+    """The 2 x 2 sweep through the CLI in local processes (one per core): (result, folder)."""
+    out = tmp_path_factory.mktemp("sweep") / "local"
+    return invoke(*sweep_args(out)), out
+
+
+# The cases and the table ---------------------------------------------------------------------
+
+
+def test_two_varied_values_give_their_product_as_cases(local_sweep):
+    result, out = local_sweep
+    assert result.exit_code == 0, result.output
+    assert result.stdout.startswith("4 cases: 4 success\n")
+    assert sorted(p.name for p in (out / "cases").iterdir()) == CASES
+    table = pd.read_csv(out / "sweep.csv")
+    assert table["case"].tolist() == CASES  # the first varied path varies slowest
+    assert table[FRICTION].tolist() == [0.05, 0.05, 0.1, 0.1]
+    assert table[RADIUS].tolist() == pytest.approx([0.01, 0.0101, 0.01, 0.0101], rel=1e-12)
+    assert (table["status"] == "success").all()
+    assert table["error"].isna().all()  # empty
+    assert (table["wall_s"] > 0).all()
+    for case in CASES:
+        record = json.loads((out / "cases" / case / "case.json").read_text())
+        row = table.set_index("case").loc[case]
+        assert record["overrides"] == [
+            f"solver.t_end={T_END}",
+            f"{FRICTION}={row[FRICTION]:g}",
+            f"{RADIUS}={case.rpartition('=')[2].replace('_', ' ')}",
+        ]
+
+
+def test_the_table_holds_each_case_summary(local_sweep):
+    _, out = local_sweep
+    table = pd.read_csv(out / "sweep.csv")
+    fixed = ["case", FRICTION, RADIUS, "status", "error", "wall_s"]
+    assert table.columns[: len(fixed)].tolist() == fixed
+    for name in HEADLINE:
+        assert f"coupler_follower.{name}" in table.columns
+    for values in table.to_dict("records"):
+        summary = json.loads((out / "cases" / values["case"] / "summary.json").read_text())
+        assert summary["settings"]["t_end"] == float(T_END)
+        joint = summary["clearance_joints"]["coupler_follower"]
+        assert joint["radial_clearance_m"] == pytest.approx(values[RADIUS] - 0.0098)
+        for key, value in joint.items():
+            expected = float("nan") if value is None else value
+            assert values[f"coupler_follower.{key}"] == pytest.approx(expected, nan_ok=True)
+        for key, value in summary["stats"].items():
+            assert values[key] == pytest.approx(value)
+    assert table["accepted_steps"].gt(0).all()
+
+
+def test_csv_and_parquet_hold_the_same_table(local_sweep):
+    _, out = local_sweep
+    csv = pd.read_csv(out / "sweep.csv").drop(columns="error")
+    parquet = pd.read_parquet(out / "sweep.parquet")
+    assert (parquet["error"] == "").all()
+    pd.testing.assert_frame_equal(
+        csv, parquet.drop(columns="error"), check_dtype=False, check_exact=False, rtol=1e-11
+    )
+
+
+def test_one_comparison_figure_per_headline_figure(local_sweep):
+    _, out = local_sweep
+    figures = {p.name for p in (out / "figures").glob("*.png")}
+    for name in HEADLINE:
+        assert f"coupler_follower.{name}.png" in figures
+    assert all(p.stat().st_size > 5000 for p in (out / "figures").glob("*.png"))
+
+
+def test_a_dask_cluster_gives_the_same_table(local_sweep, tmp_path):
+    distributed = pytest.importorskip("dask.distributed")
+    _, out = local_sweep
+    with distributed.LocalCluster(
+        n_workers=1,
+        threads_per_worker=1,
+        processes=False,
+        protocol="tcp://",  # a real connection, on loopback
+        host="127.0.0.1",
+        dashboard_address=None,
+    ) as cluster:
+        results = sweep(
+            FOURBAR,
+            tmp_path / "dask",
+            vary={FRICTION: [0.05, 0.1], RADIUS: ["10.0 mm", "10.1 mm"]},
+            overrides=[f"solver.t_end={T_END}"],
+            scheduler=cluster.scheduler_address,
+            figures=False,
+        )
+    assert results.failed == []
+    assert not results.interrupted
+    local = pd.read_parquet(out / "sweep.parquet").drop(columns=WALL_COLUMNS)
+    on_dask = pd.read_parquet(tmp_path / "dask" / "sweep.parquet").drop(columns=WALL_COLUMNS)
+    pd.testing.assert_frame_equal(on_dask, local, check_exact=True)
+    assert (tmp_path / "dask" / "cases" / CASES[3] / "summary.json").is_file()
+
+
+# Running the sweep again -------------------------------------------------------------------
+
+
+def test_running_the_same_sweep_again_skips_the_finished_cases(local_sweep, tmp_path):
+    _, first = local_sweep
+    out = tmp_path / "again"
+    shutil.copytree(first, out)
+    before = mtimes(out)
+    table_before = pd.read_parquet(out / "sweep.parquet")
+    result = invoke(*sweep_args(out, "--no-figures"))
+    assert result.exit_code == 0, result.output
+    assert result.stdout.startswith("4 cases (4 finished before): 4 success\n")
+    assert result.stderr.count("finished before, skipped") == 4
+    assert mtimes(out) == before
+    pd.testing.assert_frame_equal(pd.read_parquet(out / "sweep.parquet"), table_before)
+
+
+def test_changed_unfinished_and_new_cases_run_again(local_sweep, tmp_path):
+    _, first = local_sweep
+    out = tmp_path / "changed"
+    shutil.copytree(first, out)
+    before = mtimes(out)
+    changed, unfinished = out / "cases" / CASES[0], out / "cases" / CASES[1]
+    record = json.loads((changed / "case.json").read_text())
+    record["model"]["solver"]["t_end"] = 0.02  # as if it had been run with other settings
+    (changed / "case.json").write_text(json.dumps(record))
+    summary = json.loads((unfinished / "summary.json").read_text())
+    (unfinished / "summary.json").write_text(json.dumps(summary | {"status": "interrupted"}))
+    before[CASES[1]] = (unfinished / "summary.json").stat().st_mtime_ns
+    time.sleep(0.01)  # mtimes of rewritten files differ
+
+    more = ["--vary", f"{FRICTION}=0.05,0.1,0.2", "--vary", VARY[1]]
+    result = invoke(FOURBAR, "--out", out, *more, "--t-end", T_END, "--no-figures")
+    assert result.exit_code == 0, result.output
+    assert result.stdout.startswith("6 cases (2 finished before): 6 success\n")
+    after = mtimes(out)
+    assert {case for case in CASES if after[case] != before[case]} == set(CASES[:2])
+    assert set(after) - set(CASES) == {
+        "friction_coefficient=0.2__bearing_radius=10.0_mm",
+        "friction_coefficient=0.2__bearing_radius=10.1_mm",
+    }
+    record = json.loads((changed / "case.json").read_text())
+    assert record["model"]["solver"]["t_end"] == float(T_END)
+
+
+# Failures ----------------------------------------------------------------------------------
+
+
+def test_a_failing_case_is_reported_and_the_others_finish(tmp_path):
+    plan = tmp_path / "sweep.toml"
+    plan.write_text('[vary]\n"solver.max_steps" = [5, 100000]\n\n[set.solver]\nt_end = 0.01\n')
+    out = tmp_path / "out"
+    result = invoke(FOURBAR, "--out", out, "--file", plan, "--workers", 1, "--no-figures")
+    assert result.exit_code == 1, result.output
+    assert "2 cases: 1 success, 1 max_steps" in result.stdout
+    message = "solver.max_steps was reached; raise it or loosen the tolerances"
+    assert f"max_steps=5: max_steps: {message}" in result.stdout
+    table = pd.read_parquet(out / "sweep.parquet")
+    assert table["case"].tolist() == ["max_steps=5", "max_steps=100000"]
+    assert table["status"].tolist() == ["max_steps", "success"]
+    assert table["error"].tolist() == [message, ""]
+    assert table["accepted_steps"].iloc[0] <= 5 < table["accepted_steps"].iloc[1]
+    summary = json.loads((out / "cases" / "max_steps=5" / "summary.json").read_text())
+    assert summary["status"] == "max_steps"  # its partial results are kept
+
+
+def test_an_exception_in_a_case_is_recorded_with_its_message(tmp_path, monkeypatch):
+    run_module = importlib.import_module("jointwear.run")
+    real_run = run_module.run
+
+    def failing_abm(model_path, out, *, overrides, **options):
+        if "solver.integrator=abm" in overrides:
+            raise RuntimeError("the abm case broke\non two lines")
+        return real_run(model_path, out, overrides=overrides, **options)
+
+    monkeypatch.setattr(run_module, "run", failing_abm)
+    reports = []
+    results = sweep(
+        FOURBAR,
+        tmp_path,
+        vary={"solver.integrator": ["abm", "dopri5"]},
+        overrides=["solver.t_end=0.005"],
+        workers=1,
+        progress=lambda report, done, total: reports.append((report, done, total)),
+    )
+    table = results.table
+    assert table["status"].tolist() == ["error", "success"]
+    assert table["error"].tolist() == ["RuntimeError: the abm case broke on two lines", ""]
+    assert results.failed == ["integrator=abm"]
+    assert [(r.case, r.status, done, total) for r, done, total in reports] == [
+        ("integrator=abm", "error", 1, 2),
+        ("integrator=dopri5", "success", 2, 2),
+    ]
+    # A text-valued x axis still gets its figures, with the failed case left out.
+    assert (tmp_path / "figures" / "coupler_follower.max_wear_depth_journal_m.png").is_file()
+
+
+@pytest.mark.parametrize(
+    ("vary", "message"),
+    [
+        (["friction"], "--vary friction: expected PATH=V1,V2,..., e.g. "),
+        ([f"{FRICTION}=0.1,,0.2"], f"--vary {FRICTION}=0.1,,0.2: expected PATH=V1,V2,..., e.g."),
+        ([f"{FRICTION}=0.1,1e-1"], f"--vary {FRICTION}: value 1e-1 repeats 0.1; give each"),
+        ([f"{FRICTION}=0.1", f"{FRICTION}=0.2"], f"--vary {FRICTION}=0.2: {FRICTION} is varied"),
+        (
+            [f"{FRICTION}=0.05,-0.1"],
+            "case friction_coefficient=-0.1: joints[2].clearance.friction_coefficient: got -0.1;"
+            " must be >= 0",
+        ),
+        (
+            ["joints.coupler_folower.clearance.width=1,2"],
+            "joints.coupler_folower: no item 'coupler_folower'; names are ground_crank, ",
+        ),
+        (["solver.t_end=1,2"], "solver.t_end: both set (--set, --t-end or [set]) and varied"),
+        ([], "--vary: nothing is varied; give e.g. --vary "),
+    ],
+    ids=["no-equals", "empty-value", "repeat", "twice", "bad-value", "bad-path", "set", "none"],
+)
+def test_invalid_vary_exits_2_with_one_line_before_anything_runs(tmp_path, vary, message):
+    out = tmp_path / "never"
+    options = [arg for v in vary for arg in ("--vary", v)]
+    result = invoke(FOURBAR, "--out", out, *options, "--t-end", T_END, env=NARROW)
+    assert result.exit_code == 2, result.output
+    assert result.stdout == ""
+    assert "Traceback" not in result.output
+    lines = result.stderr.splitlines()
+    assert len(lines) == 1, lines
+    assert lines[0].startswith(message), lines[0]
+    assert not out.exists()
+
+
+# Case names, values and plans --------------------------------------------------------------
+
+
+def test_vary_values_split_at_top_level_commas_only():
+    vary = parse_vary(['a.b=[1, 2],"x, y", 3 mm ', "c=abm"])
+    assert vary == {"a.b": ["[1, 2]", '"x, y"', "3 mm"], "c": ["abm"]}
+
+
+def test_case_names_are_short_unique_and_safe():
+    cases = make_cases(
+        {
+            "joints.a.clearance.friction_coefficient": ["0.1"],
+            "joints.b.clearance.friction_coefficient": ["0.2", '"8e-14 1/Pa"'],
+        }
+    )
+    assert [c.id for c in cases] == [
+        "a.clearance.friction_coefficient=0.1__b.clearance.friction_coefficient=0.2",
+        "a.clearance.friction_coefficient=0.1__b.clearance.friction_coefficient=8e-14_1_Pa",
+    ]
+    long = make_cases({"x": ["1" * 200, "1" * 199 + "2"]})
+    assert len({c.id for c in long}) == 2
+    assert all(len(c.id) <= 120 for c in long)
+    clash = make_cases({"x": ["abm", "ABM", "a/b", "a b"]})
+    assert len({c.id.lower() for c in clash}) == 4
+    assert all(c.id.replace("=", "").replace("-", "").replace("_", "").isalnum() for c in clash)
+
+
+def test_varied_values_in_the_table_are_the_model_si_values():
+    model = jw.load_model(
+        FOURBAR, ["drivers.motor.function.speed=750 rpm", "solver.integrator=dopri5"]
+    )
+    assert si_value(model, "drivers.motor.function.speed", "750 rpm") == pytest.approx(78.5398163)
+    assert si_value(model, "solver.integrator", "dopri5") == "dopri5"
+    youngs = si_value(model, "joints.coupler_follower.clearance.youngs_modulus", "207 GPa")
+    assert youngs == pytest.approx(2.07e11)
+
+
+def test_a_sweep_file_and_options_make_one_plan(tmp_path):
+    plan_file = tmp_path / "plan.toml"
+    plan_file.write_text(
+        '[vary]\n"solver.max_step" = ["1 ms", 0.0005]\n'
+        "[vary.joints.coupler_follower.clearance]\nwidth = [0.02, 0.03]\n"
+        '[set]\n"solver.t_end" = 0.02\n'
+    )
+    plan = make_plan([f"{FRICTION}=0.1,0.2"], plan_file, ["solver.rtol=1e-7"])
+    assert plan.vary == {
+        "solver.max_step": ['"1 ms"', "0.0005"],
+        "joints.coupler_follower.clearance.width": ["0.02", "0.03"],
+        FRICTION: ["0.1", "0.2"],
+    }
+    assert plan.overrides == ["solver.t_end=0.02", "solver.rtol=1e-7"]
+    with pytest.raises(ModelError, match="also varied in"):
+        make_plan(["solver.max_step=1"], plan_file)
+    plan_file.write_text("[vari]\nx = [1]\n")
+    with pytest.raises(ModelError, match=r"unknown key 'vari'.*did you mean 'vary'"):
+        make_plan([], plan_file)
+
+
+# Ctrl-C --------------------------------------------------------------------------------------
+
+
+@pytest.mark.skipif(sys.platform == "win32", reason="POSIX signals")
+@pytest.mark.parametrize(
+    ("workers", "statuses"),
+    [(1, ["success", "interrupted", "not_run"]), (2, ["success", "interrupted", "interrupted"])],
+    ids=["serial", "processes"],
+)
+def test_ctrl_c_keeps_finished_cases_and_writes_the_table(tmp_path, workers, statuses):
+    out = tmp_path / "interrupted"
+    command = [
+        sys.executable, "-m", "jointwear", "sweep", str(FOURBAR), "--out", str(out),
+        "--vary", "solver.t_end=0.01,1000,1001", "--set", "solver.output_interval=0.01",
+        "--workers", str(workers), "--no-figures",
+    ]  # fmt: skip
+    proc = subprocess.Popen(command, cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    try:
+        first = out / "cases" / "t_end=0.01" / "case.json"
+        deadline = time.monotonic() + 180  # generous: the kernels may compile first
+        while not first.is_file() and proc.poll() is None and time.monotonic() < deadline:
+            time.sleep(0.1)
+        time.sleep(1.5)  # the long cases are simulating
+        assert proc.poll() is None, "the sweep ended before the signal"
+        proc.send_signal(signal.SIGINT)  # to the sweep's own process only
+        stdout, stderr = proc.communicate(timeout=60)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.communicate()
+    stdout, stderr = stdout.decode(), stderr.decode()
+    assert proc.returncode == 1, f"stdout: {stdout}; stderr: {stderr}"
+    assert "Traceback" not in stderr
+    assert "interrupted: the table holds the cases finished so far" in stderr
+    table = pd.read_parquet(out / "sweep.parquet")
+    assert table["case"].tolist() == ["t_end=0.01", "t_end=1000", "t_end=1001"]
+    assert table["status"].tolist() == statuses
+    assert 0 < table["t_reached"].iloc[1] < 1000
+    summary = json.loads((out / "cases" / "t_end=1000" / "summary.json").read_text())
+    assert summary["status"] == "interrupted"
+    assert os.path.getsize(out / "sweep.csv") > 0
