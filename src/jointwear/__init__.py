@@ -10,6 +10,7 @@ from .model import Model, ModelError, load_model
 from .results import Results, load_results
 from .run import run
 from .simulate import simulate
+from .sweep import sweep
 
 __all__ = [
     "Model",
@@ -20,4 +21,5 @@ __all__ = [
     "load_results",
     "run",
     "simulate",
+    "sweep",
 ]

@@ -233,14 +233,17 @@ class _SweepProgress:
         self.bar: Progress | None = None
         self.task = 0
 
-    def __call__(self, report: CaseReport, done: int, total: int) -> None:
-        if report.skipped:
+    def __call__(self, report: CaseReport | None, done: int, total: int) -> None:
+        if report is None:
+            line = None  # the runs start
+        elif report.skipped:
             line = f"[{done}/{total}] {report.case}: finished before, skipped"
         else:
             outcome = report.status + (f" ({report.error})" if report.error else "")
             line = f"[{done}/{total}] {report.case}: {outcome}, {report.wall_s:.3g} s"
         if not err.is_terminal:
-            err.print(line, markup=False, highlight=False, soft_wrap=True)
+            if line is not None:
+                err.print(line, markup=False, highlight=False, soft_wrap=True)
             return
         if self.bar is None:
             self.bar = Progress(
@@ -255,7 +258,8 @@ class _SweepProgress:
             )
             self.bar.start()
             self.task = self.bar.add_task("sweep", total=total)
-        self.bar.console.print(line, markup=False, highlight=False, soft_wrap=True)
+        if line is not None:
+            self.bar.console.print(line, markup=False, highlight=False, soft_wrap=True)
         self.bar.update(self.task, completed=done)
 
     def close(self) -> None:
@@ -324,9 +328,10 @@ def sweep(
     tally = ", ".join(f"{counts[status]} {status}" for status in order)
     skipped = f" ({len(results.skipped)} finished before)" if results.skipped else ""
     out.print(f"{len(table)} cases{skipped}: {tally}", soft_wrap=True, highlight=False)
+    plain = {"soft_wrap": True, "markup": False, "highlight": False}
     for _, row in table[table["status"] != "success"].iterrows():
-        out.print(f"{row['case']}: {row['status']}: {row['error']}", soft_wrap=True, markup=False)
-    out.print(f"table in {out_dir / 'sweep.csv'} and sweep.parquet", soft_wrap=True)
+        out.print(f"{row['case']}: {row['status']}: {row['error']}", **plain)
+    out.print(f"table in {out_dir / 'sweep.csv'} and sweep.parquet", **plain)
     if results.interrupted:
         err.print("interrupted: the table holds the cases finished so far", soft_wrap=True)
     if results.failed:

@@ -262,7 +262,7 @@ PositiveTime = Annotated[Time, Gt(0)]
 class Solver(Table):
     """Integration and output settings; times in [s], rates in [1/s]."""
 
-    integrator: Annotated[str, one_of(INTEGRATORS, "integrator")] = "dopri5"
+    integrator: Annotated[str, one_of(INTEGRATORS, "integrator")] = "abm"
     rtol: Annotated[Number, Gt(0)] = 1e-6
     atol: Annotated[Number, Gt(0)] = 1e-8
     min_step: PositiveTime = 1e-12

@@ -49,7 +49,8 @@ class CaseReport:
     skipped: bool  # finished by an earlier run of the sweep
 
 
-SweepProgress = Callable[[CaseReport, int, int], None]  # (report, cases done, cases in all)
+# (report, cases done, cases in all); the report is None once, when the runs start
+SweepProgress = Callable[[CaseReport | None, int, int], None]
 
 
 @dataclass(frozen=True)
@@ -105,7 +106,8 @@ def sweep(
     figures
         Draw the comparison figures into ``out/figures``.
     progress
-        Called as each case is done or found done: (report, cases done, cases in all).
+        Called as each case is done or found done, as ``progress(report, cases done, cases in
+        all)``, and once with report None when the runs start.
 
     Returns
     -------
@@ -133,6 +135,8 @@ def sweep(
         outcomes[name] = read_record(folder / CASES_FOLDER / name)
         _report(progress, name, outcomes[name], len(outcomes), len(tasks), skipped=True)
     todo = [task for task in tasks if task.case not in outcomes]
+    if progress is not None:
+        progress(None, len(outcomes), len(tasks))
     with stop_requests() as stop:
         for task, outcome in _runner(todo, scheduler, workers, stop):
             outcomes[task.case] = outcome
