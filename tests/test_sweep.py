@@ -292,6 +292,29 @@ def test_invalid_vary_exits_2_with_one_line_before_anything_runs(tmp_path, vary,
     assert not out.exists()
 
 
+@pytest.mark.parametrize(
+    ("options", "message"),
+    [
+        (["--cycles", 0], "--cycles: got 0; expected a whole number >= 1"),
+        (["--workers", 0], "--workers: got 0; expected a whole number >= 1"),
+        (
+            ["--workers", 2, "--scheduler", "tcp://127.0.0.1:8786"],
+            "--workers: only for local processes; with --scheduler the cluster's workers run",
+        ),
+    ],
+    ids=["cycles", "workers", "workers-and-scheduler"],
+)
+def test_invalid_options_exit_2_before_anything_runs(tmp_path, options, message):
+    out = tmp_path / "never"
+    result = invoke(FOURBAR, "--out", out, "--vary", f"{FRICTION}=0.1,0.2", *options, env=NARROW)
+    assert result.exit_code == 2, result.output
+    assert result.stdout == ""
+    lines = result.stderr.splitlines()
+    assert len(lines) == 1, lines
+    assert lines[0].startswith(message), lines[0]
+    assert not out.exists()
+
+
 # Case names, values and plans --------------------------------------------------------------
 
 

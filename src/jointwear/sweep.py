@@ -17,6 +17,7 @@ finished cases are kept and the table is written with what is done.
 
 from __future__ import annotations
 
+import importlib.util
 import json
 import math
 import os
@@ -102,7 +103,9 @@ def sweep(
         Address of a Dask distributed scheduler to run the cases on (workers must see
         ``model_path`` and ``out`` at the same paths); None: local processes.
     workers
-        Local processes (default: one per core); 1 runs the cases in this process.
+        Local processes (default: one per core); 1 runs the cases in this process. Local
+        processes import the calling script again: call ``sweep`` from a script under
+        ``if __name__ == "__main__":``.
     figures
         Draw the comparison figures into ``out/figures``.
     progress
@@ -183,8 +186,10 @@ def _check_options(
         if path in vary
     ]
     for option, value in (("--cycles", cycles), ("--workers", workers)):
-        if value is not None and not (_is_number(value) and isinstance(value, int) and value >= 1):
+        if value is not None and not _whole(value):
             problems.append(f"{option}: got {value!r}; expected a whole number >= 1")
+    if cycles is not None and _whole(cycles) and not importlib.util.find_spec("jointwear.lifetime"):
+        problems.append("--cycles: this jointwear has no long-life wear runs yet; leave it out")
     if workers is not None and scheduler is not None:
         problems.append(
             "--workers: only for local processes; with --scheduler the cluster's workers run "
@@ -316,6 +321,10 @@ def headline(summary: Mapping) -> dict[str, float]:
         if _is_number(value):
             columns[key] = value
     return columns
+
+
+def _whole(value: object) -> bool:
+    return isinstance(value, int) and not isinstance(value, bool) and value >= 1
 
 
 def _is_number(value: object) -> bool:
