@@ -48,6 +48,20 @@ def _fail(error: ModelError) -> typer.Exit:
     return typer.Exit(code=2)
 
 
+def _progress(label: str, count: str) -> Progress:
+    """A transient rich progress bar on stderr: label, bar, count, elapsed time and ETA."""
+    return Progress(
+        TextColumn(label),
+        BarColumn(),
+        TextColumn(count),
+        TimeElapsedColumn(),
+        TextColumn("ETA"),
+        TimeRemainingColumn(),
+        console=err,
+        transient=True,
+    )
+
+
 class _ProgressBar:
     """A progress bar on a terminal, shown once a run has lasted PROGRESS_AFTER_S."""
 
@@ -60,16 +74,7 @@ class _ProgressBar:
         if self.bar is None:
             if not err.is_terminal or time.perf_counter() - self.start < PROGRESS_AFTER_S:
                 return  # no bar in logs and pipes, nor for short runs
-            self.bar = Progress(
-                TextColumn("simulating"),
-                BarColumn(),
-                TextColumn("t = {task.completed:.4g} / {task.total:.4g} s"),
-                TimeElapsedColumn(),
-                TextColumn("ETA"),
-                TimeRemainingColumn(),
-                console=err,
-                transient=True,
-            )
+            self.bar = _progress("simulating", "t = {task.completed:.4g} / {task.total:.4g} s")
             self.bar.start()
             self.task = self.bar.add_task("run", total=t_end)
         self.bar.update(self.task, completed=t)
@@ -246,16 +251,7 @@ class _SweepProgress:
                 err.print(line, markup=False, highlight=False, soft_wrap=True)
             return
         if self.bar is None:
-            self.bar = Progress(
-                TextColumn("sweep"),
-                BarColumn(),
-                TextColumn("{task.completed}/{task.total} cases"),
-                TimeElapsedColumn(),
-                TextColumn("ETA"),
-                TimeRemainingColumn(),
-                console=err,
-                transient=True,
-            )
+            self.bar = _progress("sweep", "{task.completed}/{task.total} cases")
             self.bar.start()
             self.task = self.bar.add_task("sweep", total=total)
         if line is not None:
