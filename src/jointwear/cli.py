@@ -19,6 +19,7 @@ from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn, Ti
 from rich.table import Table
 
 from .assembly import assemble
+from .lifetime import life as run_life
 from .model import ModelError, load_model
 from .model_clearance import Clearance
 from .results import load_results
@@ -332,3 +333,132 @@ def sweep(
         err.print("interrupted: the table holds the cases finished so far", soft_wrap=True)
     if results.failed:
         raise typer.Exit(code=1)
+
+
+class _LifeProgress:
+    """Cycles done of a life run: a progress bar on a terminal."""
+
+    def __init__(self) -> None:
+        self.bar: Progress | None = None
+        self.task = 0
+
+    def __call__(self, cycles: int, total: int) -> None:
+        if not err.is_terminal:
+            return
+        if self.bar is None:
+            self.bar = Progress(
+                TextColumn("wearing"),
+                BarColumn(),
+                TextColumn("{task.completed:,} / {task.total:,} cycles"),
+                TimeElapsedColumn(),
+                console=err,
+                transient=True,
+            )
+            self.bar.start()
+            self.task = self.bar.add_task("life", total=total)
+        self.bar.update(self.task, completed=cycles)
+
+    def close(self) -> None:
+        if self.bar is not None:
+            self.bar.stop()
+
+
+@app.command()
+def life(
+    model: ModelPath,
+    cycles: Annotated[
+        int, typer.Option("--cycles", help="Driver cycles to reach.", show_default=False)
+    ],
+    out_dir: Annotated[Path, typer.Option("--out", help="Life-run folder.", show_default=False)],
+    overrides: Overrides = None,
+    resume: Annotated[
+        bool, typer.Option("--resume", help="Continue the interrupted run in OUT.")
+    ] = False,
+    settle_cycles: Annotated[
+        int, typer.Option("--settle-cycles", help="Cycles simulated before extrapolating.")
+    ] = 2,
+    measure_cycles: Annotated[
+        int, typer.Option("--measure-cycles", help="Cycles simulated per update.")
+    ] = 1,
+    max_change: Annotated[
+        str,
+        typer.Option(
+            "--max-change",
+            help="Largest depth an update adds to a sector: a length ('1 um') or a share of "
+            "the current clearance ('2%').",
+        ),
+    ] = "2%",
+    extrapolate: Annotated[
+        bool,
+        typer.Option("--extrapolate/--no-extrapolate", help="Off: simulate every cycle."),
+    ] = True,
+    feedback: Annotated[
+        bool | None,
+        typer.Option(
+            "--feedback/--no-feedback",
+            help="Worn profiles feed back into the contact [default: the model's setting].",
+            show_default=False,
+        ),
+    ] = None,
+    max_growth: Annotated[
+        float,
+        typer.Option(
+            "--max-growth",
+            help="Stop when the clearance would grow by this share of the nominal (1: doubled).",
+        ),
+    ] = 1.0,
+    figures: Annotated[bool, typer.Option("--figures/--no-figures", help="Draw figures.")] = True,
+) -> None:
+    """Predict the wear of MODEL's clearance joints over many driver cycles.
+
+    Simulates a few cycles, extrapolates their wear over many (each update changing a
+    profile by at most --max-change), updates the joint geometry and repeats. OUT gets
+    life.csv (one row per update), profiles.csv, summary.json and figures/.
+    """
+    bar = _LifeProgress()
+    try:
+        results = run_life(
+            model,
+            out_dir,
+            cycles=cycles,
+            overrides=overrides or [],
+            settle_cycles=settle_cycles,
+            measure_cycles=measure_cycles,
+            max_change=max_change,
+            extrapolate=extrapolate,
+            feedback=feedback,
+            max_growth=max_growth,
+            resume=resume,
+            figures=figures,
+            progress=bar,
+        )
+    except ModelError as error:
+        raise _fail(error) from None
+    finally:
+        bar.close()
+    summary = results.summary
+    plain = {"soft_wrap": True, "markup": False, "highlight": False}
+    out.print(
+        f"{summary['status']}: {summary['message']}; {summary['cycles_reached']:,} cycles in "
+        f"{summary['updates']} updates ({summary['simulated_cycles']:,} simulated), "
+        f"{summary['wall_s']:.3g} s wall",
+        **plain,
+    )
+    for name, joint in summary["clearance_joints"].items():
+        if "clearance_growth_m" in joint:
+            out.print(_life_line(name, joint), **plain)
+    out.print(f"results in {out_dir}", **plain)
+    if summary["status"] != "success":
+        raise typer.Exit(code=1)
+
+
+def _life_line(name: str, joint: dict) -> str:
+    """One line of a clearance joint's wear after a life run."""
+    at = joint["cycles_to_clearance_growth_50pct"]
+    half = f"{at:,.0f} cycles" if at is not None else "not reached"
+    return (
+        f"{name}: max wear depth journal {joint['max_wear_depth_journal_m'] * 1e6:.4g} µm, "
+        f"bearing {joint['max_wear_depth_bearing_m'] * 1e6:.4g} µm; clearance grown by "
+        f"{joint['clearance_growth_m'] * 1e6:.4g} µm ({joint['clearance_growth_fraction']:.0%});"
+        f" 50% growth at {half}"
+    )

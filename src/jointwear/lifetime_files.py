@@ -1,0 +1,176 @@
+"""The folder of a long-life wear run, and its checkpoint.
+
+``life.csv`` and ``profiles.csv`` grow by the rows of every update; after them the checkpoint
+is written: ``checkpoint/state_<update>.npz`` (the ``RunState`` to go on from) and then
+``checkpoint/checkpoint.json`` (update, cycles, wall time, that state's file name, and the
+settings and resolved model the run was started with), each replaced at once. A run stopped
+at any point is continued from the last complete checkpoint: the rows written after it are
+dropped and the same sequence of runs follows, from the same states.
+"""
+
+from __future__ import annotations
+
+import csv
+import json
+import os
+import tempfile
+from dataclasses import dataclass
+from pathlib import Path
+
+import pandas as pd
+
+from .clearance_results import WEAR_COLUMNS
+from .model import ModelError
+from .run_state import RunState, load_run_state
+
+TABLE = "life.csv"
+PROFILES = "profiles.csv"
+SUMMARY = "summary.json"
+MODEL = "model.json"
+FIGURES = "figures"
+CHECKPOINTS = "checkpoint"
+CHECKPOINT = "checkpoint.json"
+PROFILE_COLUMNS = ["update", "cycles", *WEAR_COLUMNS]
+
+
+@dataclass(frozen=True)
+class Checkpoint:
+    """Where a life run stands after an update.
+
+    Attributes
+    ----------
+    update
+        Number of the last update (0: the settling cycles, or nothing yet without a state).
+    cycles
+        Cycles so far, simulated and extrapolated.
+    simulated_cycles
+        Cycles simulated so far.
+    wall_s
+        Wall time spent so far, over every session of the run [s].
+    state
+        The state to go on from (profiles updated); None before the first run.
+    """
+
+    update: int
+    cycles: int
+    simulated_cycles: int
+    wall_s: float
+    state: RunState | None
+
+
+def start_folder(folder: Path, columns: list[str], record: dict) -> None:
+    """Make ``folder`` a fresh life-run folder: earlier outputs removed, empty tables, model.
+
+    ``record`` (settings and resolved model) is kept in the checkpoint, for ``--resume``.
+    """
+    existing = next(p for p in (folder, *folder.parents) if p.exists())
+    if not existing.is_dir():
+        raise ModelError([f"out: {existing} exists and is not a folder; give a folder path"])
+    (folder / CHECKPOINTS).mkdir(parents=True, exist_ok=True)
+    (folder / SUMMARY).unlink(missing_ok=True)
+    for old in (folder / CHECKPOINTS).glob("state_*.npz"):
+        old.unlink()
+    _write_rows(folder / TABLE, columns, [])
+    _write_rows(folder / PROFILES, PROFILE_COLUMNS, [])
+    _write_text(folder / MODEL, json.dumps(record["model"], indent=2))
+    save_checkpoint(folder, Checkpoint(0, 0, 0, 0.0, None), record)
+
+
+def append_update(folder: Path, row: list, profiles: list[list]) -> None:
+    """Add an update's row to life.csv and its profiles to profiles.csv."""
+    for name, rows in ((TABLE, [row]), (PROFILES, profiles)):
+        with open(folder / name, "a", newline="") as f:
+            csv.writer(f).writerows(rows)
+
+
+def save_checkpoint(folder: Path, point: Checkpoint, record: dict) -> None:
+    """Write the checkpoint: the state's file first, then the JSON naming it."""
+    state = None
+    if point.state is not None:
+        state = f"state_{point.update:06d}.npz"
+        point.state.save(folder / CHECKPOINTS / state)
+    data = {
+        "update": point.update,
+        "cycles": point.cycles,
+        "simulated_cycles": point.simulated_cycles,
+        "wall_s": point.wall_s,
+        "state": state,
+        **record,
+    }
+    _write_text(folder / CHECKPOINTS / CHECKPOINT, json.dumps(data, indent=2))
+    for old in (folder / CHECKPOINTS).glob("state_*.npz"):
+        if old.name != state:
+            old.unlink()
+
+
+def load_checkpoint(folder: Path, record: dict) -> Checkpoint:
+    """The last checkpoint of the run in ``folder``, its tables cut back to it.
+
+    Raises
+    ------
+    ModelError
+        If ``folder`` holds no life run, or one started with other settings or another model.
+    """
+    path = folder / CHECKPOINTS / CHECKPOINT
+    try:
+        data = json.loads(path.read_text())
+    except (OSError, ValueError):
+        where = f"{CHECKPOINTS}/{CHECKPOINT}"
+        problem = f"out: {folder} holds no life run to resume (no readable {where}); "
+        raise ModelError([problem + "run without --resume to start one"]) from None
+    given = json.loads(json.dumps(record))  # as it reads back from JSON
+    problems = [
+        f"{key}: {given['settings'].get(key)!r} differs from the {value!r} the run in {folder} "
+        "was started with; give the same settings to resume, or start afresh without --resume"
+        for key, value in data["settings"].items()
+        if given["settings"].get(key) != value
+    ]
+    if data["model"] != given["model"]:
+        problems.append(
+            f"model: the model (after --set) differs from the one the run in {folder} was "
+            "started with (its model.json); give the same model and --set values to resume, "
+            "or start afresh without --resume"
+        )
+    if problems:
+        raise ModelError(problems)
+    for name in (TABLE, PROFILES):
+        _cut(folder / name, data["update"] if data["state"] else -1)
+    state = load_run_state(folder / CHECKPOINTS / data["state"]) if data["state"] else None
+    return Checkpoint(
+        data["update"], data["cycles"], data["simulated_cycles"], data["wall_s"], state
+    )
+
+
+def read_tables(folder: Path) -> tuple[pd.DataFrame, pd.DataFrame]:
+    """life.csv and profiles.csv, numbers read back exactly."""
+    return tuple(pd.read_csv(folder / name) for name in (TABLE, PROFILES))
+
+
+def write_summary(folder: Path, summary: dict) -> None:
+    """Write summary.json, whole or not at all."""
+    _write_text(folder / SUMMARY, json.dumps(summary, indent=2))
+
+
+def _cut(path: Path, update: int) -> None:
+    """Keep the header and the rows of updates up to ``update`` (first column)."""
+    with open(path, newline="") as f:
+        rows = list(csv.reader(f))
+    kept = [row for row in rows[1:] if int(row[0]) <= update]
+    if len(kept) < len(rows) - 1:
+        _write_rows(path, rows[0], kept)
+
+
+def _write_rows(path: Path, header: list[str], rows: list[list]) -> None:
+    with tempfile.NamedTemporaryFile(
+        "w", dir=path.parent, suffix=".tmp", delete=False, newline=""
+    ) as f:
+        writer = csv.writer(f)
+        writer.writerow(header)
+        writer.writerows(rows)
+    os.replace(f.name, path)
+
+
+def _write_text(path: Path, text: str) -> None:
+    with tempfile.NamedTemporaryFile("w", dir=path.parent, suffix=".tmp", delete=False) as f:
+        f.write(text)
+    os.replace(f.name, path)

@@ -1,0 +1,326 @@
+"""Long-life wear (``jointwear.lifetime.life`` and ``jointwear life``) against independent answers.
+
+Two mechanisms:
+- the paper's four-bar (examples/flores2009_fourbar.toml) with five times the paper's wear
+  coefficient, so that 30 crank turns wear like 150 of the paper's (the clearance grows by
+  about 13%): against the direct simulation of the same turns;
+- a pressed rotor (ROTOR below): a disc on a clearance pin fixed to the ground, driven at
+  10 rev/s and pressed down by a constant force, frictionless, with dampers that settle it.
+  At rest its journal slides on the bearing's bottom at v = omega R_J under F_N = F, so
+  Archard's law gives the worn volume in closed form (as in test_clearance_physics): from
+  rest, k v (F t - c_d (c + delta)), the damper's impulse taken from F's.
+"""
+
+import json
+import math
+import os
+import signal
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+from typer.testing import CliRunner
+
+import jointwear as jw
+from jointwear.cli import app
+from jointwear.lifetime import life
+from jointwear.lifetime_settings import cycle_driver
+from jointwear.sweep import sweep
+
+ROOT = Path(__file__).parents[1]
+FOURBAR = ROOT / "examples" / "flores2009_fourbar.toml"
+PENDULUM = ROOT / "examples" / "pendulum.toml"
+FAST_WEAR = ["joints.coupler_follower.clearance.wear_coefficient=4e-13"]  # 5 x the paper's
+PERIOD = 0.04  # one crank turn at 1500 rpm [s]
+
+R_B, R_J, WIDTH, K_WEAR = 0.010, 0.0098, 0.020, 8e-14  # [m, m, m, 1/Pa]
+C = R_B - R_J
+FORCE, OMEGA = 1000.0, 20.0 * math.pi  # [N], 10 rev/s
+ROTOR_PERIOD = 2.0 * math.pi / OMEGA  # 0.1 s
+K_HERTZ = 579.6e9 / 5.46  # Table 2's internal-cylinder stiffness [N/m^1.5]
+DELTA = (FORCE / K_HERTZ) ** (2.0 / 3.0)  # static penetration, 4.46e-6 m
+DAMPING = 36700.0  # along the force: about critical for the contact [N s/m]
+SECTOR = 2.0 * math.pi / 36
+ROTOR = f"""
+name = "pressed_rotor"
+[ground.points]
+pin = [0.0, 0.0]
+above = [0.0, 1.0]
+side = [1.0, 0.0]
+[[bodies]]
+name = "rotor"
+mass = 1.0
+inertia = 1e-4
+position = [0.0, 0.0]
+angle = 0.0
+points = {{ c = [0.0, 0.0] }}
+[[joints]]
+name = "gap"
+type = "revolute"
+bodies = ["ground", "rotor"]     # the bearing fixed, the journal turning
+points = ["pin", "c"]
+[joints.clearance]
+bearing_radius = {R_B}
+journal_radius = {R_J}
+width = {WIDTH}
+youngs_modulus = 207e9
+poisson_ratio = 0.3
+restitution_coefficient = 0.9
+friction_coefficient = 0.0
+wear_coefficient = {K_WEAR}
+[[drivers]]
+name = "motor"
+type = "angle"
+body = "rotor"
+function = {{ type = "constant_speed", speed = {OMEGA!r}, initial = 0.0 }}
+[[forces]]
+type = "point_force"
+body = "rotor"
+point = "c"
+force = [0.0, {-FORCE}]
+[[forces]]
+type = "spring_damper"
+bodies = ["ground", "rotor"]
+points = ["above", "c"]
+stiffness = 0.0
+damping = {DAMPING}
+free_length = 1.0
+[[forces]]
+type = "spring_damper"
+bodies = ["ground", "rotor"]
+points = ["side", "c"]
+stiffness = 0.0
+damping = 4470.0
+free_length = 1.0
+"""
+
+
+@pytest.fixture
+def rotor(tmp_path: Path) -> Path:
+    path = tmp_path / "rotor.toml"
+    path.write_text(ROTOR)
+    return path
+
+
+def final_profile(results) -> np.ndarray:
+    """Depths [m] of the last update, in the wear table's order (joint, surface, sector)."""
+    rows = results.profiles[results.profiles["update"] == results.profiles["update"].max()]
+    return rows["depth_m"].to_numpy()
+
+
+def test_without_extrapolation_it_is_the_direct_simulation(tmp_path):
+    res = life(FOURBAR, tmp_path, cycles=5, overrides=FAST_WEAR, extrapolate=False, figures=False)
+    assert res.status == "success", res.message
+    # 2 settling turns, then one turn per update.
+    assert res.table["cycles"].tolist() == [2, 3, 4, 5]
+    assert res.table["extrapolated_cycles"].tolist() == [0, 0, 0, 0]
+    direct = jw.simulate(jw.load_model(FOURBAR, [*FAST_WEAR, f"solver.t_end={5 * PERIOD!r}"]))
+    expected = direct.wear["depth_m"].to_numpy()
+    # Restarts reproduce a continuous run to about 1e-4 of the deepest sector; 1 %.
+    np.testing.assert_allclose(final_profile(res), expected, rtol=0, atol=1e-2 * expected.max())
+    np.testing.assert_allclose(res.final.wear.ravel(), expected, rtol=0, atol=1e-2 * expected.max())
+    joint = res.summary["clearance_joints"]["coupler_follower"]
+    summary = direct.summary["clearance_joints"]["coupler_follower"]
+    assert joint["worn_volume_m3"] == pytest.approx(summary["worn_volume_m3"], rel=1e-2)
+
+
+def test_extrapolation_converges_as_max_change_tightens(tmp_path):
+    reference = final_profile(
+        life(FOURBAR, tmp_path / "direct", cycles=30, overrides=FAST_WEAR, extrapolate=False,
+             figures=False)
+    )  # fmt: skip
+    errors = {}
+    for change in ("8%", "4%", "2%", "1%"):
+        res = life(FOURBAR, tmp_path / change, cycles=30, overrides=FAST_WEAR, max_change=change,
+                   figures=False)  # fmt: skip
+        assert res.status == "success", res.message
+        assert res.summary["cycles_reached"] == 30
+        errors[change] = np.abs(final_profile(res) - reference).max() / reference.max()
+    # The wear rate falls as the profile deepens, so extrapolating the rate measured at the
+    # start of an update overshoots by about the update's share: first order. Measured
+    # 3.1e-2, 2.3e-2, 1.6e-2, 8.6e-3.
+    values = list(errors.values())
+    assert values == sorted(values, reverse=True), errors
+    assert errors["1%"] < 0.5 * errors["8%"], errors
+    assert errors["1%"] < 0.015, errors
+
+
+def test_without_feedback_the_wear_is_linear_and_archard_exact(rotor, tmp_path):
+    # The model keeps wear_feedback's default (on); feedback=False switches it off.
+    cycles = 1000
+    res = life(rotor, tmp_path, cycles=cycles, max_change="1 um", feedback=False, figures=False)
+    assert res.status == "success", res.message
+    table = res.table
+    assert table["cycles"].iloc[-1] == cycles
+    assert table["extrapolated_cycles"].sum() > 0.9 * cycles  # mostly extrapolated
+    # Per-cycle wear is constant (the rotor is at rest in its steady state): the deepest
+    # bearing sector gains share/2 k F v T / (R_B (2 pi / N) L) per turn (the patch straddles
+    # the sector edge at 270 deg, half on each side). Measured 1.6e-8 apart; 1e-7.
+    speed = OMEGA * R_J
+    per_turn = K_WEAR * FORCE * speed * ROTOR_PERIOD
+    rates = table["gap.wear_rate_m_per_cycle"].to_numpy()[1:]
+    np.testing.assert_allclose(rates, 0.25 * per_turn / (R_B * SECTOR * WIDTH), rtol=1e-7)
+    # So the profiles lie on a straight line in cycles after the settling turns: the
+    # bearing's patch exactly (1.6e-8 again); the turning journal's sectors to the placement
+    # of the steps, each of which puts its patch at the angle of its midpoint (a sector's
+    # share off by up to 3e-4 in a turn, as in test_clearance_physics); 1e-3.
+    profiles = res.profiles.pivot_table(index="update", columns=["surface", "sector"],
+                                        values="depth_m")  # fmt: skip
+    turns = table["cycles"].to_numpy()[1:, None] - 2
+    for surface, rtol in (("bearing", 1e-7), ("journal", 1e-3)):
+        depths = profiles[surface].to_numpy()
+        gained = (depths[1:] - depths[0]) / turns
+        np.testing.assert_allclose(gained, np.broadcast_to(gained[-1], gained.shape), rtol=rtol)
+    # And the worn volume is Archard's over the whole run, from rest (the damper's impulse
+    # c_d (c + delta) is taken from F's): 1e-6 (the landing's steps, measured 2e-8).
+    exact = K_WEAR * speed * (FORCE * cycles * ROTOR_PERIOD - DAMPING * (C + DELTA))
+    assert table["gap.worn_volume_m3"].iloc[-1] == pytest.approx(exact, rel=1e-6)
+    assert res.summary["clearance_joints"]["gap"]["worn_volume_m3"] == pytest.approx(exact, 1e-6)
+
+
+class Crash(Exception):
+    pass
+
+
+@pytest.mark.parametrize("how", ["exception", "signal"])
+def test_resume_gives_the_uninterrupted_run(tmp_path, how):
+    settings = {"cycles": 30, "overrides": FAST_WEAR, "max_change": "1%", "figures": False}
+    whole = life(FOURBAR, tmp_path / "whole", **settings)
+    assert whole.status == "success" and len(whole.table) > 5
+
+    def stop_at_third(cycles: int, total: int) -> None:
+        if cycles == whole.table["cycles"].iloc[3]:  # the third update after the settling
+            if how == "exception":
+                raise Crash  # as if the process died right after the update
+            os.kill(os.getpid(), signal.SIGINT)  # Ctrl-C: the run ends after this update
+
+    folder = tmp_path / "parts"
+    if how == "exception":
+        with pytest.raises(Crash):
+            life(FOURBAR, folder, **settings, progress=stop_at_third)
+    else:
+        stopped = life(FOURBAR, folder, **settings, progress=stop_at_third)
+        assert stopped.status == "interrupted"
+        assert "--resume" in stopped.message
+        assert len(stopped.table) == 4
+        assert json.loads((folder / "summary.json").read_text())["status"] == "interrupted"
+    resumed = life(FOURBAR, folder, **settings, resume=True)
+    assert resumed.status == "success"
+    # The same runs from the same states: equal to the last bit, but for the wall times.
+    columns = [c for c in whole.table.columns if c != "wall_s"]
+    pd.testing.assert_frame_equal(resumed.table[columns], whole.table[columns], check_exact=True)
+    pd.testing.assert_frame_equal(resumed.profiles, whole.profiles, check_exact=True)
+    np.testing.assert_array_equal(resumed.final.wear, whole.final.wear)
+    np.testing.assert_array_equal(resumed.final.y, whole.final.y)
+    assert resumed.summary["wall_s"] > resumed.table["wall_s"].iloc[3]
+
+
+def test_resume_refuses_other_settings_and_empty_folders(tmp_path):
+    life(FOURBAR, tmp_path, cycles=3, overrides=FAST_WEAR, figures=False)
+    with pytest.raises(jw.ModelError) as error:
+        life(FOURBAR, tmp_path, cycles=3, overrides=FAST_WEAR, max_change="1%", resume=True)
+    [line] = error.value.problems
+    assert line.startswith("max_change: '1%' differs from the '2%'")
+    with pytest.raises(jw.ModelError) as error:
+        life(FOURBAR, tmp_path, cycles=3, resume=True)
+    assert error.value.problems[0].startswith("model: the model (after --set) differs")
+    with pytest.raises(jw.ModelError) as error:
+        life(FOURBAR, tmp_path / "empty", cycles=3, resume=True)
+    assert "holds no life run to resume" in error.value.problems[0]
+
+
+def test_bad_settings_and_models_are_model_errors(tmp_path):
+    with pytest.raises(jw.ModelError) as error:
+        life(FOURBAR, tmp_path, cycles=0, measure_cycles=1.5, max_change="2 kg", max_growth=0)
+    lines = error.value.problems
+    assert [line.split(":")[0] for line in lines] == [
+        "cycles",
+        "measure_cycles",
+        "max_change",
+        "max_growth",
+    ]
+    assert "has units of mass; expected a length" in lines[2]
+    for change in ("0%", "150%", "x%", "-1 um"):
+        with pytest.raises(jw.ModelError, match="max_change: "):
+            life(FOURBAR, tmp_path, cycles=10, max_change=change)
+    with pytest.raises(jw.ModelError) as error:
+        life(PENDULUM, tmp_path, cycles=10)
+    assert [line.split(":")[0] for line in error.value.problems] == ["drivers", "joints"]
+    polynomial = 'drivers.motor.function={type="polynomial", coefficients=[0.0, 1.0]}'
+    with pytest.raises(jw.ModelError, match=r"^drivers\[0\]: a polynomial function of time"):
+        life(FOURBAR, tmp_path, cycles=10, overrides=[polynomial])
+    torque = (
+        'forces=[{{type="torque", body="follower", torque={{type="harmonic", amplitude=1.0, '
+        'angular_frequency="{} rpm"}}}}]'
+    )
+    with pytest.raises(jw.ModelError, match=r"^forces\[0\]: its period 0.03 s does not divide"):
+        life(FOURBAR, tmp_path, cycles=10, overrides=[torque.format(2000)])
+    # A load twice as fast as the crank repeats within its turn.
+    assert cycle_driver(jw.load_model(FOURBAR, [torque.format(3000)])) == ("motor", PERIOD)
+
+
+def test_the_clearance_limit_stops_the_run_honestly(tmp_path):
+    # 20 % growth at most: the settling turns and a few updates, then the stop, before the
+    # update that would pass it (the folder keeps everything up to there).
+    res = life(FOURBAR, tmp_path, cycles=10**6, overrides=FAST_WEAR, max_growth=0.2)
+    assert res.status == "clearance_limit"
+    assert "past max_growth 0.2 x the nominal 200 µm" in res.message
+    joint = res.summary["clearance_joints"]["coupler_follower"]
+    assert 0.1 < joint["clearance_growth_fraction"] <= 0.2
+    assert res.summary["cycles_reached"] < 10**6
+    assert (tmp_path / "figures" / "life_wear.png").is_file()
+    assert (tmp_path / "figures" / "life_profiles.png").is_file()
+
+
+def invoke(*args: object):
+    return CliRunner().invoke(app, [str(a) for a in args])
+
+
+def test_cli_life_writes_the_folder(tmp_path):
+    result = invoke("life", FOURBAR, "--cycles", 12, "--out", tmp_path, "--set", FAST_WEAR[0],
+                    "--max-change", "4%")  # fmt: skip
+    assert result.exit_code == 0, result.output
+    assert result.output.startswith("success: reached 12 cycles; 12 cycles in ")
+    assert "coupler_follower: max wear depth journal" in result.output
+    for name in ("life.csv", "profiles.csv", "summary.json", "model.json",
+                 "figures/life_wear.png", "figures/life_profiles.png",
+                 "checkpoint/checkpoint.json"):  # fmt: skip
+        assert (tmp_path / name).is_file(), name
+    summary = json.loads((tmp_path / "summary.json").read_text())
+    table = pd.read_csv(tmp_path / "life.csv")
+    assert summary["updates"] == table["update"].iloc[-1] and summary["cycles_reached"] == 12
+    profiles = pd.read_csv(tmp_path / "profiles.csv")
+    assert len(profiles) == len(table) * 2 * 36
+    again = invoke("life", FOURBAR, "--cycles", 12, "--out", tmp_path, "--set", FAST_WEAR[0],
+                   "--max-change", "4%", "--resume")  # fmt: skip
+    assert again.exit_code == 0, again.output
+    assert (
+        pd.read_csv(tmp_path / "life.csv")
+        .drop(columns="wall_s")
+        .equals(table.drop(columns="wall_s"))
+    )
+
+
+def test_cli_life_exit_codes(tmp_path):
+    bad = invoke("life", FOURBAR, "--cycles", 10, "--out", tmp_path, "--max-change", "2 kg")
+    assert bad.exit_code == 2
+    assert bad.output.startswith("max_change: '2 kg' has units of mass")
+    assert "Traceback" not in bad.output
+    stopped = invoke("life", FOURBAR, "--cycles", 10**6, "--out", tmp_path, "--set",
+                     FAST_WEAR[0], "--max-growth", 0.05, "--no-figures")  # fmt: skip
+    assert stopped.exit_code == 1
+    assert stopped.output.startswith("clearance_limit: coupler_follower: the effective clearance")
+    assert not (tmp_path / "figures").exists()
+
+
+def test_sweep_of_life_runs_tabulates_their_summaries(tmp_path):
+    vary = {"joints.coupler_follower.clearance.wear_coefficient": ["4e-13 1/Pa", "8e-13 1/Pa"]}
+    results = sweep(FOURBAR, tmp_path, vary=vary, cycles=4, workers=1, figures=False)
+    table = results.table
+    assert table["status"].tolist() == ["success", "success"]
+    assert table["cycles_reached"].tolist() == [4, 4]
+    growth = table["coupler_follower.clearance_growth_m"].to_numpy()
+    # Twice the coefficient, twice the wear (the worn profiles barely change the dynamics in
+    # 4 turns): 2 to 1 %.
+    assert growth[1] / growth[0] == pytest.approx(2.0, rel=1e-2)
