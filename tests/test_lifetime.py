@@ -115,6 +115,7 @@ def test_without_extrapolation_it_is_the_direct_simulation(tmp_path):
     # 2 settling turns, then one turn per update.
     assert res.table["cycles"].tolist() == [2, 3, 4, 5]
     assert res.table["extrapolated_cycles"].tolist() == [0, 0, 0, 0]
+    assert res.table["simulated_cycles"].tolist() == [2, 3, 4, 5]  # no jumps, no resettling
     direct = jw.simulate(jw.load_model(FOURBAR, [*FAST_WEAR, f"solver.t_end={5 * PERIOD!r}"]))
     expected = direct.wear["depth_m"].to_numpy()
     # Restarts reproduce a continuous run to about 1e-4 of the deepest sector; 1 %.
@@ -139,11 +140,11 @@ def test_extrapolation_converges_as_max_change_tightens(tmp_path):
         errors[change] = np.abs(final_profile(res) - reference).max() / reference.max()
     # The wear rate falls as the profile deepens, so extrapolating the rate measured at the
     # start of an update overshoots by about the update's share: first order. Measured
-    # 3.1e-2, 2.3e-2, 1.6e-2, 8.6e-3.
+    # 3.1e-2, 1.6e-2, 9.3e-3, 4.2e-3 (with resettle_cycles=0: 3.1e-2 to 8.6e-3).
     values = list(errors.values())
     assert values == sorted(values, reverse=True), errors
-    assert errors["1%"] < 0.5 * errors["8%"], errors
-    assert errors["1%"] < 0.015, errors
+    assert errors["1%"] < 0.25 * errors["8%"], errors
+    assert errors["1%"] < 0.008, errors
 
 
 def test_without_feedback_the_wear_is_linear_and_archard_exact(rotor, tmp_path):
@@ -154,6 +155,9 @@ def test_without_feedback_the_wear_is_linear_and_archard_exact(rotor, tmp_path):
     table = res.table
     assert table["cycles"].iloc[-1] == cycles
     assert table["extrapolated_cycles"].sum() > 0.9 * cycles  # mostly extrapolated
+    # Two turns per update: the second wears like the first, so it is steady and measured.
+    assert set(np.diff(table["simulated_cycles"])[:-1]) == {2}
+    assert table["steady"].all()
     # Per-cycle wear is constant (the rotor is at rest in its steady state): the deepest
     # bearing sector gains share/2 k F v T / (R_B (2 pi / N) L) per turn (the patch straddles
     # the sector edge at 270 deg, half on each side). Measured 1.6e-8 apart; 1e-7.

@@ -6,6 +6,7 @@ systems", Mechanism and Machine Theory 44 (2009) 1211-1222.
 
 __version__ = "0.1.0"
 
+from .lifetime import LifeResults, life
 from .model import Model, ModelError, load_model
 from .results import Results, load_results
 from .run import run
@@ -13,10 +14,12 @@ from .simulate import simulate
 from .sweep import sweep
 
 __all__ = [
+    "LifeResults",
     "Model",
     "ModelError",
     "Results",
     "__version__",
+    "life",
     "load_model",
     "load_results",
     "run",

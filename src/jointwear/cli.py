@@ -346,14 +346,7 @@ class _LifeProgress:
         if not err.is_terminal:
             return
         if self.bar is None:
-            self.bar = Progress(
-                TextColumn("wearing"),
-                BarColumn(),
-                TextColumn("{task.completed:,} / {task.total:,} cycles"),
-                TimeElapsedColumn(),
-                console=err,
-                transient=True,
-            )
+            self.bar = _progress("wearing", "{task.completed:,} / {task.total:,} cycles")
             self.bar.start()
             self.task = self.bar.add_task("life", total=total)
         self.bar.update(self.task, completed=cycles)
@@ -378,8 +371,19 @@ def life(
         int, typer.Option("--settle-cycles", help="Cycles simulated before extrapolating.")
     ] = 2,
     measure_cycles: Annotated[
-        int, typer.Option("--measure-cycles", help="Cycles simulated per update.")
+        int, typer.Option("--measure-cycles", help="Steady cycles averaged per update.")
     ] = 1,
+    steady_tolerance: Annotated[
+        float,
+        typer.Option(
+            "--steady-tolerance",
+            help="Two cycles are steady when their wear per sector agrees to this share of "
+            "the deepest.",
+        ),
+    ] = 0.05,
+    max_update_cycles: Annotated[
+        int, typer.Option("--max-update-cycles", help="Most cycles simulated per update.")
+    ] = 20,
     max_change: Annotated[
         str,
         typer.Option(
@@ -424,6 +428,8 @@ def life(
             overrides=overrides or [],
             settle_cycles=settle_cycles,
             measure_cycles=measure_cycles,
+            steady_tolerance=steady_tolerance,
+            max_update_cycles=max_update_cycles,
             max_change=max_change,
             extrapolate=extrapolate,
             feedback=feedback,

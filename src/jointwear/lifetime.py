@@ -6,8 +6,14 @@ S. Mukras, N.H. Kim, N.A. Mauntler, T.L. Schmitz and W.G. Sawyer, "Analysis of p
 multibody systems with revolute joint wear", Wear 268 (2010) 643-652, a life run
 
 1. simulates ``settle_cycles`` cycles from the assembled start (the start-up transient);
-2. simulates ``measure_cycles`` cycles from where the last run ended, on the current worn
-   profiles, and takes their profile change over their number as the wear of one cycle;
+2. simulates cycles one after another from where the last run ended, on the current worn
+   profiles, until the last two wear alike (to ``steady_tolerance``), and takes the mean
+   wear of the last ``measure_cycles`` as the wear of one cycle. It simulates two at least:
+   a jump in the profiles starts a transient, and a transient extrapolated as if it lasted
+   the whole update distorts the result (the paper's four-bar passes through short bursts
+   of chaotic impacts, which one measured cycle per update stretches over much of its
+   life). If ``max_update_cycles`` cycles do not settle, the update extrapolates nothing
+   and the next tries again;
 3. extrapolates it over as many further cycles as keep the largest depth it adds to any
    sector of any surface within ``max_change`` (a depth, or a share of the joint's current
    clearance, nominal plus growth), never past ``cycles`` in all; both surfaces' profiles
@@ -49,6 +55,7 @@ from .lifetime_records import (
 )
 from .lifetime_settings import LifeSettings, cycle_driver, with_feedback
 from .model import Model, ModelError, load_model
+from .results import Results
 from .run_state import RunState
 from .simulate import simulate
 
@@ -97,6 +104,8 @@ def life(
     overrides: Sequence[str] = (),
     settle_cycles: int = 2,
     measure_cycles: int = 1,
+    steady_tolerance: float = 0.05,
+    max_update_cycles: int = 20,
     max_change: str | float = "2%",
     extrapolate: bool = True,
     feedback: bool | None = None,
@@ -120,7 +129,16 @@ def life(
     settle_cycles
         Cycles simulated first, from the assembled start, before any extrapolation.
     measure_cycles
-        Cycles simulated per update to measure the wear of one cycle.
+        Cycles whose mean wear is the wear of one cycle (without extrapolation: cycles per
+        update).
+    steady_tolerance
+        With extrapolation, an update simulates cycle after cycle until the last two wear
+        alike: no sector's wear differs by more than this share of the deepest [-]; then
+        the last ``measure_cycles`` give the wear per cycle.
+    max_update_cycles
+        At most this many cycles per update. If they never agree (a burst of chaotic impacts,
+        a drifting regime) nothing is extrapolated: the update is a stretch of direct
+        simulation, its row says ``steady`` 0, and the next update tries again.
     max_change
         Largest depth an update's extrapolation may add to a sector: a length (``"1 um"``,
         or a number [m]) or a share of the joint's current clearance (``"2%"``).
@@ -150,8 +168,9 @@ def life(
         For invalid settings or models, one line per problem.
     """
     settings = LifeSettings(
-        cycles, settle_cycles, measure_cycles, max_change, extrapolate, feedback, max_growth
-    )
+        cycles, settle_cycles, measure_cycles, steady_tolerance, max_update_cycles, max_change,
+        extrapolate, feedback, max_growth,
+    )  # fmt: skip
     problems = settings.problems()
     try:
         model = with_feedback(load_model(model_path, overrides), feedback)
@@ -233,38 +252,101 @@ class _Run:
         ``point`` comes back unchanged if the run stops instead (``status``).
         """
         settings, model = self.settings, self.model
-        settling = point.state is None and settings.settle_cycles > 0
         left = settings.cycles - point.cycles
-        count = min(settings.settle_cycles if settling else settings.measure_cycles, left)
-        results = simulate(self._cycles_model(count), initial=point.state)
-        span = f"cycles {point.cycles} to {point.cycles + count}"
-        if results.status == "interrupted":
-            self.stop("interrupted", f"interrupted during {span}{RESUME}")
-            return point
-        if results.status != "success":
-            self.stop("failed", f"the run of {span} ended '{results.status}': {results.message}")
-            return point
-        start = np.zeros_like(results.final.wear) if point.state is None else point.state.wear
-        rate = (results.final.wear - start) / count
-        psi = [relative_angle_range(j, results.timeseries) for j in model.clearance_joints]
+        settling = point.state is None and settings.settle_cycles > 0
+        if settling:
+            simulated = min(settings.settle_cycles, left)
+            settled = self._simulate(point, None, 0, simulated)
+            if settled is None:
+                return point
+            runs = measured = [settled]
+            rate, steady = settled.final.wear / simulated, True
+        else:
+            outcome = self._measure(point, left)
+            if outcome is None:
+                return point
+            runs, measured, rate, steady = outcome
+            simulated = len(runs)
+        final = runs[-1].final
+        psi = [relative_angle_range(joint, measured) for joint in model.clearance_joints]
         extra = 0
-        if settings.extrapolate and not settling:
-            growth = clearance_growths(model, results.final.wear, psi)
-            extra = self._extrapolated_cycles(rate, growth, left - count)
-        wear = results.final.wear + extra * rate
+        if settings.extrapolate and steady and not settling:
+            growth = clearance_growths(model, final.wear, psi)
+            extra = self._extrapolated_cycles(rate, growth, left - simulated)
+        wear = final.wear + extra * rate
         growth = clearance_growths(model, wear, psi)
-        cycles = point.cycles + count + extra
+        cycles = point.cycles + simulated + extra
         if self._past_limit(wear, growth, point.cycles, cycles):
             return point
         update = 0 if settling else point.update + 1
-        counts = (update, cycles, point.simulated_cycles + count, extra)
-        row = update_row(model, self.driver, counts, wear, rate, growth, results, self.wall())
+        counts = (update, cycles, point.simulated_cycles + simulated, extra, int(steady))
+        row = update_row(model, self.driver, counts, wear, rate, growth, measured, self.wall())
         files.append_update(self.folder, row, profile_rows(model, update, cycles, wear))
-        new = files.Checkpoint(
-            update, cycles, counts[2], self.wall(), results.final.with_wear(wear)
-        )
+        new = files.Checkpoint(update, cycles, counts[2], self.wall(), final.with_wear(wear))
         files.save_checkpoint(self.folder, new, self.record)
         return new
+
+    def _measure(
+        self, point: files.Checkpoint, left: int
+    ) -> tuple[list[Results], list[Results], NDArray[np.float64], bool] | None:
+        """Simulate cycle by cycle until the wear of a cycle is steady.
+
+        Without extrapolation ``measure_cycles`` cycles. With it, at least one more (the
+        first after a jump in the profiles starts a transient), until the last two cycles'
+        wear agrees to ``steady_tolerance``, and at most ``max_update_cycles``.
+
+        Returns
+        -------
+        tuple or None
+            The runs (one per cycle), those measured, the wear per cycle [m] (the mean of
+            the last ``measure_cycles``; of all but the first if never steady), and whether
+            it was steady; None if a run failed or was interrupted.
+        """
+        settings = self.settings
+        most = settings.max_update_cycles if settings.extrapolate else settings.measure_cycles
+        state, runs, rates = point.state, [], []
+        while len(runs) < min(most, left):
+            results = self._simulate(point, state, len(runs), 1)
+            if results is None:
+                return None
+            start = np.zeros_like(results.final.wear) if state is None else state.wear
+            rates.append(results.final.wear - start)
+            runs.append(results)
+            state = results.final
+            if not settings.extrapolate:
+                continue
+            if len(runs) > settings.measure_cycles and self._steady(rates[-2], rates[-1]):
+                count = settings.measure_cycles
+                return runs, runs[-count:], np.mean(rates[-count:], axis=0), True
+        first = 1 if settings.extrapolate and len(runs) > 1 else 0
+        return runs, runs[first:], np.mean(rates[first:], axis=0), not settings.extrapolate
+
+    def _steady(self, before: NDArray[np.float64], last: NDArray[np.float64]) -> bool:
+        """Whether two cycles' wear agrees, sector by sector, to ``steady_tolerance``."""
+        for k, joint in enumerate(self.model.clearance_joints):
+            n = joint.clearance.sectors
+            change = np.abs(last[k, :, :n] - before[k, :, :n]).max()
+            if change > self.settings.steady_tolerance * last[k, :, :n].max():
+                return False
+        return True
+
+    def _simulate(
+        self, point: files.Checkpoint, begin: RunState | None, after: int, count: int
+    ) -> Results | None:
+        """Simulate ``count`` cycles from ``begin``, ``after`` cycles past ``point``.
+
+        None if the run failed or was interrupted (``status`` then says so).
+        """
+        outcome = simulate(self._cycles_model(count), initial=begin)
+        first = point.cycles + after
+        span = f"cycles {first} to {first + count}"
+        if outcome.status == "interrupted":
+            self.stop("interrupted", f"interrupted during {span}{RESUME}")
+            return None
+        if outcome.status != "success":
+            self.stop("failed", f"the run of {span} ended '{outcome.status}': {outcome.message}")
+            return None
+        return outcome
 
     def _cycles_model(self, count: int) -> Model:
         """The model run for ``count`` cycles (one wear snapshot, at the end)."""

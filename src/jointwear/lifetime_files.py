@@ -136,9 +136,8 @@ def load_checkpoint(folder: Path, record: dict) -> Checkpoint:
     for name in (TABLE, PROFILES):
         _cut(folder / name, data["update"] if data["state"] else -1)
     state = load_run_state(folder / CHECKPOINTS / data["state"]) if data["state"] else None
-    return Checkpoint(
-        data["update"], data["cycles"], data["simulated_cycles"], data["wall_s"], state
-    )
+    counts = (data[key] for key in ("update", "cycles", "simulated_cycles", "wall_s"))
+    return Checkpoint(*counts, state)
 
 
 def read_tables(folder: Path) -> tuple[pd.DataFrame, pd.DataFrame]:

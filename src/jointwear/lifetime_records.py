@@ -28,9 +28,14 @@ GRID_CELLS = 2**20  # evaluations per block of the clearance-growth search
 GROWTH_MARK = 0.5  # the summary reports the cycles at which the growth reached this share of c
 
 
-def relative_angle_range(joint: RevoluteJoint, timeseries: pd.DataFrame) -> tuple[float, float]:
+def relative_angle_range(joint: RevoluteJoint, runs: Sequence[Results]) -> tuple[float, float]:
     """Smallest and largest angle psi [rad] of the journal's body relative to the bearing's."""
-    psi = _angle(timeseries, joint.bodies[1]) - _angle(timeseries, joint.bodies[0])
+    psi = np.concatenate(
+        [
+            _angle(r.timeseries, joint.bodies[1]) - _angle(r.timeseries, joint.bodies[0])
+            for r in runs
+        ]
+    )
     return float(psi.min()), float(psi.max())
 
 
@@ -103,7 +108,7 @@ def driver_columns(model: Model, driver: str) -> tuple[str, str]:
 
 def table_columns(model: Model, driver: str) -> list[str]:
     """The columns of life.csv, in order."""
-    columns = ["update", "cycles", "simulated_cycles", "extrapolated_cycles"]
+    columns = ["update", "cycles", "simulated_cycles", "extrapolated_cycles", "steady"]
     for joint in model.clearance_joints:
         columns += [f"{joint.name}.{key}" for key in _JOINT_KEYS]
     return [*columns, driver_columns(model, driver)[1], "wall_s"]
@@ -122,11 +127,11 @@ _JOINT_KEYS = (
 def update_row(
     model: Model,
     driver: str,
-    counts: tuple[int, int, int, int],
+    counts: tuple[int, int, int, int, int],
     wear: NDArray[np.float64],
     rate: NDArray[np.float64],
     growth: NDArray[np.float64],
-    results: Results,
+    runs: Sequence[Results],
     wall_s: float,
 ) -> list:
     """One row of life.csv, in the order of ``table_columns``.
@@ -136,15 +141,16 @@ def update_row(
     model, driver
         The model and the driver whose cycles are counted.
     counts
-        Update number, cycles so far, cycles simulated so far, cycles extrapolated by it.
+        Update number, cycles so far, cycles simulated so far, cycles extrapolated by it,
+        and 1 if the measured cycles were steady (else 0).
     wear
         The profiles after the update [m], (joints, 2, sectors).
     rate
-        Wear per cycle of the update's simulated cycles [m].
+        Wear per cycle of the update's measured cycles [m].
     growth
         Effective clearance growth of each joint with ``wear`` [m].
-    results
-        The update's simulated cycles (contact forces and driver torque).
+    runs
+        The update's measured cycles (contact forces and driver torque).
     wall_s
         Wall time of the whole run so far [s].
     """
@@ -157,9 +163,10 @@ def update_row(
             float(growth[k]),
             worn_volume(joint, wear[k]),
             float(rate[k, :, :n].max()),
-            float(results.summary["clearance_joints"][joint.name]["max_contact_force_n"]),
+            max(r.summary["clearance_joints"][joint.name]["max_contact_force_n"] for r in runs),
         ]
-    torque = results.timeseries[driver_columns(model, driver)[0]]
+    column = driver_columns(model, driver)[0]
+    torque = np.concatenate([r.timeseries[column].to_numpy() for r in runs])
     return [*row, float(torque.max() - torque.min()), wall_s]
 
 
@@ -209,6 +216,7 @@ def life_summary(
         "cycles_reached": int(last["cycles"]) if last is not None else 0,
         "updates": int(last["update"]) if last is not None else 0,
         "simulated_cycles": int(last["simulated_cycles"]) if last is not None else 0,
+        "unsteady_updates": int((table["steady"] == 0).sum()),
     }
     joints = {}
     for k, joint in enumerate(model.clearance_joints):

@@ -25,6 +25,8 @@ class LifeSettings:
     cycles: int
     settle_cycles: int = 2
     measure_cycles: int = 1
+    steady_tolerance: float = 0.05
+    max_update_cycles: int = 20
     max_change: str | float = "2%"
     extrapolate: bool = True
     feedback: bool | None = None
@@ -33,16 +35,23 @@ class LifeSettings:
     def problems(self) -> list[str]:
         """One line per invalid setting (empty if all are fine)."""
         lines = []
-        for name, least in (("cycles", 1), ("settle_cycles", 0), ("measure_cycles", 1)):
+        whole = (("cycles", 1), ("settle_cycles", 0), ("measure_cycles", 1))
+        for name, least in (*whole, ("max_update_cycles", self.measure_cycles + 1)):
             value = getattr(self, name)
             if isinstance(value, bool) or not isinstance(value, int) or value < least:
                 lines.append(f"{name}: {value!r} is not a whole number >= {least}")
+        tolerance = self.steady_tolerance
+        if not _number(tolerance) or not 0.0 < tolerance < 1.0:
+            lines.append(
+                f"steady_tolerance: {tolerance!r} is not a number between 0 and 1; give the "
+                "share of the deepest sector's wear by which two steady cycles may differ"
+            )
         try:
             self.change_bound(0.0)
         except ValueError as error:
             lines.append(f"max_change: {error}")
         growth = self.max_growth
-        if isinstance(growth, bool) or not isinstance(growth, int | float) or not growth > 0:
+        if not _number(growth) or not growth > 0:
             lines.append(
                 f"max_growth: {growth!r} is not a positive number; give the clearance growth "
                 "at which to stop as a share of the nominal clearance (1.0: doubled)"
@@ -67,6 +76,10 @@ class LifeSettings:
         if not depth > 0.0:
             raise ValueError(f"{text!r} is not a positive depth; e.g. '1 um', or '2%'")
         return depth
+
+
+def _number(value: object) -> bool:
+    return isinstance(value, int | float) and not isinstance(value, bool)
 
 
 def cycle_driver(model: Model) -> tuple[str, float]:
