@@ -371,14 +371,14 @@ def life(
         int, typer.Option("--settle-cycles", help="Cycles simulated before extrapolating.")
     ] = 2,
     measure_cycles: Annotated[
-        int, typer.Option("--measure-cycles", help="Steady cycles averaged per update.")
+        int, typer.Option("--measure-cycles", help="Cycles averaged for the wear per cycle.")
     ] = 1,
     steady_tolerance: Annotated[
         float,
         typer.Option(
             "--steady-tolerance",
-            help="Two cycles are steady when their wear per sector agrees to this share of "
-            "the deepest.",
+            help="Steady: two groups of --measure-cycles wear alike, per sector, to this share "
+            "of the deepest.",
         ),
     ] = 0.05,
     max_update_cycles: Annotated[

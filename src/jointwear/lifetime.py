@@ -7,13 +7,13 @@ multibody systems with revolute joint wear", Wear 268 (2010) 643-652, a life run
 
 1. simulates ``settle_cycles`` cycles from the assembled start (the start-up transient);
 2. simulates cycles one after another from where the last run ended, on the current worn
-   profiles, until the last two wear alike (to ``steady_tolerance``), and takes the mean
-   wear of the last ``measure_cycles`` as the wear of one cycle. It simulates two at least:
-   a jump in the profiles starts a transient, and a transient extrapolated as if it lasted
-   the whole update distorts the result (the paper's four-bar passes through short bursts
-   of chaotic impacts, which one measured cycle per update stretches over much of its
-   life). If ``max_update_cycles`` cycles do not settle, the update extrapolates nothing
-   and the next tries again;
+   profiles, until the mean wear of the last ``measure_cycles`` agrees with that of the
+   ``measure_cycles`` before them (to ``steady_tolerance``), and takes it as the wear of one
+   cycle. So it simulates two cycles at least: a jump in the profiles starts a transient,
+   and a transient extrapolated as if it lasted the whole update distorts the result (the
+   paper's four-bar passes through short bursts of chaotic impacts, which one measured
+   cycle per update stretches over much of its life). If ``max_update_cycles`` cycles do
+   not settle, the update extrapolates nothing and the next tries again;
 3. extrapolates it over as many further cycles as keep the largest depth it adds to any
    sector of any surface within ``max_change`` (a depth, or a share of the joint's current
    clearance, nominal plus growth), never past ``cycles`` in all; both surfaces' profiles
@@ -129,16 +129,17 @@ def life(
     settle_cycles
         Cycles simulated first, from the assembled start, before any extrapolation.
     measure_cycles
-        Cycles whose mean wear is the wear of one cycle (without extrapolation: cycles per
-        update).
+        Cycles whose mean wear is the wear of one cycle (without extrapolation: the cycles
+        of an update).
     steady_tolerance
-        With extrapolation, an update simulates cycle after cycle until the last two wear
-        alike: no sector's wear differs by more than this share of the deepest [-]; then
-        the last ``measure_cycles`` give the wear per cycle.
+        With extrapolation, an update simulates cycle after cycle until the mean wear of the
+        last ``measure_cycles`` and of the ``measure_cycles`` before them agree: no sector's
+        differs by more than this share of the deepest [-].
     max_update_cycles
         At most this many cycles per update. If they never agree (a burst of chaotic impacts,
         a drifting regime) nothing is extrapolated: the update is a stretch of direct
-        simulation, its row says ``steady`` 0, and the next update tries again.
+        simulation, its row says ``steady`` 0, and the next update tries again. (A lasting
+        chaotic regime is extrapolated by averaging: raise ``measure_cycles``.)
     max_change
         Largest depth an update's extrapolation may add to a sector: a length (``"1 um"``,
         or a number [m]) or a share of the joint's current clearance (``"2%"``).
@@ -289,18 +290,18 @@ class _Run:
     def _measure(
         self, point: files.Checkpoint, left: int
     ) -> tuple[list[Results], list[Results], NDArray[np.float64], bool] | None:
-        """Simulate cycle by cycle until the wear of a cycle is steady.
+        """Simulate cycle by cycle until the wear per cycle is steady.
 
-        Without extrapolation ``measure_cycles`` cycles. With it, at least one more (the
-        first after a jump in the profiles starts a transient), until the last two cycles'
-        wear agrees to ``steady_tolerance``, and at most ``max_update_cycles``.
+        Without extrapolation ``measure_cycles`` cycles. With it, until the mean wear of the
+        last ``measure_cycles`` agrees with that of the ``measure_cycles`` before them to
+        ``steady_tolerance``, and at most ``max_update_cycles``.
 
         Returns
         -------
         tuple or None
-            The runs (one per cycle), those measured, the wear per cycle [m] (the mean of
-            the last ``measure_cycles``; of all but the first if never steady), and whether
-            it was steady; None if a run failed or was interrupted.
+            The runs (one per cycle), those measured, the wear per cycle [m] (their mean;
+            of all but the first run if never steady), and whether it was steady (False only
+            after ``max_update_cycles``); None if a run failed or was interrupted.
         """
         settings = self.settings
         most = settings.max_update_cycles if settings.extrapolate else settings.measure_cycles
@@ -315,14 +316,17 @@ class _Run:
             state = results.final
             if not settings.extrapolate:
                 continue
-            if len(runs) > settings.measure_cycles and self._steady(rates[-2], rates[-1]):
-                count = settings.measure_cycles
-                return runs, runs[-count:], np.mean(rates[-count:], axis=0), True
+            m = settings.measure_cycles
+            if len(runs) >= 2 * m:
+                last = np.mean(rates[-m:], axis=0)
+                if self._steady(np.mean(rates[-2 * m : -m], axis=0), last):
+                    return runs, runs[-m:], last, True
         first = 1 if settings.extrapolate and len(runs) > 1 else 0
-        return runs, runs[first:], np.mean(rates[first:], axis=0), not settings.extrapolate
+        unsettled = settings.extrapolate and len(runs) == most  # not for want of cycles left
+        return runs, runs[first:], np.mean(rates[first:], axis=0), not unsettled
 
     def _steady(self, before: NDArray[np.float64], last: NDArray[np.float64]) -> bool:
-        """Whether two cycles' wear agrees, sector by sector, to ``steady_tolerance``."""
+        """Whether two wears per cycle agree, sector by sector, to ``steady_tolerance``."""
         for k, joint in enumerate(self.model.clearance_joints):
             n = joint.clearance.sectors
             change = np.abs(last[k, :, :n] - before[k, :, :n]).max()
@@ -388,11 +392,12 @@ class _Run:
                 self.stop(
                     "clearance_limit",
                     f"{joint.name}: the effective clearance would grow by {growth[k] * UM:.4g} "
-                    f"µm between cycles {before} and {after}, past max_growth "
-                    f"{self.settings.max_growth:g} x the nominal {c.radial_clearance * UM:.4g} "
-                    "µm; the contact stiffness and Hertz patch are those of the nominal radii "
-                    "and the worn profile enters only radially, so the model no longer "
-                    "describes the joint (raise max_growth to go on regardless)",
+                    f"µm, {growth[k] / c.radial_clearance:.0%} of the nominal "
+                    f"{c.radial_clearance * UM:.4g} µm, between cycles {before} and {after}: "
+                    f"past max_growth {self.settings.max_growth:g}. The contact stiffness and "
+                    "Hertz patch are those of the nominal radii and the worn profile enters "
+                    "only radially, so the model would no longer describe the joint (raise "
+                    "max_growth to go on regardless)",
                 )
                 return True
         return False

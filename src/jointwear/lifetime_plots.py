@@ -15,7 +15,7 @@ import pandas as pd
 from matplotlib import colormaps
 from matplotlib.figure import Figure  # figures without pyplot: no global backend switch
 
-from .lifetime_records import GROWTH_MARK, driver_columns
+from .lifetime_records import GROWTH_MARK, cycles_at, driver_columns
 from .model import Model
 
 PROFILE_COUNTS = 5  # profiles drawn: at about 1/5, 2/5, ... of the cycles reached
@@ -37,10 +37,14 @@ def plot_life_wear(model: Model, table: pd.DataFrame, driver: str) -> Figure:
         line = depth.plot(cycles, growth, "-", lw=2.0, label=f"{name}: clearance growth")[0]
         mark = GROWTH_MARK * joint.clearance.radial_clearance * UM
         depth.axhline(mark, color=line.get_color(), ls=":", lw=1.0)
+        reached = cycles_at(table["cycles"], growth, mark)
+        text = f"{GROWTH_MARK:.0%} of c" + (f" at {reached:,.0f} cycles" if reached else "")
         depth.annotate(
-            f"{GROWTH_MARK:.0%} of c", (cycles[0], mark), xytext=(2, 2),
-            textcoords="offset points", color=line.get_color(), fontsize="small",
+            text, (cycles[0], mark), xytext=(2, 2), textcoords="offset points",
+            color=line.get_color(), fontsize="small",
         )  # fmt: skip
+        if reached:
+            depth.plot(reached, mark, "o", color=line.get_color(), ms=4)
         force.plot(cycles, table[f"{name}.max_contact_force_n"] / 1e3, ".-", label=name)
     range_column = driver_columns(model, driver)[1]
     torque.plot(cycles, table[range_column], ".-", color="k")

@@ -35,11 +35,15 @@ class LifeSettings:
     def problems(self) -> list[str]:
         """One line per invalid setting (empty if all are fine)."""
         lines = []
-        whole = (("cycles", 1), ("settle_cycles", 0), ("measure_cycles", 1))
-        for name, least in (*whole, ("max_update_cycles", self.measure_cycles + 1)):
-            value = getattr(self, name)
-            if isinstance(value, bool) or not isinstance(value, int) or value < least:
-                lines.append(f"{name}: {value!r} is not a whole number >= {least}")
+        for name, least in (("cycles", 1), ("settle_cycles", 0), ("measure_cycles", 1)):
+            if not _whole(getattr(self, name), least):
+                lines.append(f"{name}: {getattr(self, name)!r} is not a whole number >= {least}")
+        least = 2 * self.measure_cycles if _whole(self.measure_cycles, 1) else 2
+        if not _whole(self.max_update_cycles, least):
+            lines.append(
+                f"max_update_cycles: {self.max_update_cycles!r} is not a whole number >= {least}"
+                " (twice measure_cycles: two groups of them are compared)"
+            )
         tolerance = self.steady_tolerance
         if not _number(tolerance) or not 0.0 < tolerance < 1.0:
             lines.append(
@@ -80,6 +84,10 @@ class LifeSettings:
 
 def _number(value: object) -> bool:
     return isinstance(value, int | float) and not isinstance(value, bool)
+
+
+def _whole(value: object, least: int) -> bool:
+    return isinstance(value, int) and not isinstance(value, bool) and value >= least
 
 
 def cycle_driver(model: Model) -> tuple[str, float]:
