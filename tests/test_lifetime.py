@@ -14,6 +14,7 @@ Two mechanisms:
 import json
 import math
 import os
+import re
 import signal
 from pathlib import Path
 
@@ -297,6 +298,30 @@ def test_the_clearance_limit_stops_the_run_honestly(tmp_path):
     assert (tmp_path / "figures" / "life_profiles.png").is_file()
 
 
+def test_a_journal_worn_through_stops_the_run(tmp_path):
+    # The rotor on a 0.5 mm pin, worn fast (k = 1e-9 1/Pa): the turning journal loses
+    # share k F v T / (2 pi R_J L) = 25 µm a turn all round (v = omega R_J), through its
+    # radius after 20 turns.
+    thin = ROTOR.replace(f"bearing_radius = {R_B}", "bearing_radius = 0.0007")
+    thin = thin.replace(f"journal_radius = {R_J}", "journal_radius = 0.0005")
+    thin = thin.replace(f"wear_coefficient = {K_WEAR}", "wear_coefficient = 1e-9")
+    (tmp_path / "thin.toml").write_text(thin)
+    # Without feedback: at this rate the wear fed back after every step makes the steps tiny.
+    res = life(tmp_path / "thin.toml", tmp_path / "out", cycles=1000, max_change="50%",
+               max_growth=100.0, feedback=False, figures=False)  # fmt: skip
+    assert res.status == "worn_through"
+    assert re.fullmatch(
+        r"gap: the journal would be worn 0\.5\d* mm deep between cycles \d+ and \d+, through "
+        r"its radius 0\.5 mm",
+        res.message,
+    ), res.message
+    per_turn = 0.5 * 1e-9 * FORCE * OMEGA * 0.0005 * ROTOR_PERIOD / (2 * math.pi * 0.0005 * WIDTH)
+    assert per_turn == pytest.approx(25e-6)
+    depth = res.summary["clearance_joints"]["gap"]["max_wear_depth_journal_m"]
+    assert depth < 0.0005
+    assert res.summary["cycles_reached"] < 20
+
+
 def invoke(*args: object):
     return CliRunner().invoke(app, [str(a) for a in args])
 
@@ -336,6 +361,12 @@ def test_cli_life_exit_codes(tmp_path):
     assert stopped.exit_code == 1
     assert stopped.output.startswith("clearance_limit: coupler_follower: the effective clearance")
     assert not (tmp_path / "figures").exists()
+    # An earlier run's figures do not stay beside a new run's tables.
+    (tmp_path / "figures").mkdir()
+    (tmp_path / "figures" / "life_wear.png").write_bytes(b"old")
+    again = invoke("life", FOURBAR, "--cycles", 2, "--out", tmp_path, "--no-figures")
+    assert again.exit_code == 0, again.output
+    assert not (tmp_path / "figures" / "life_wear.png").exists()
 
 
 def test_sweep_of_life_runs_tabulates_their_summaries(tmp_path):

@@ -28,6 +28,7 @@ PROFILES = "profiles.csv"
 SUMMARY = "summary.json"
 MODEL = "model.json"
 FIGURES = "figures"
+FIGURE_FILES = ("life_wear.png", "life_profiles.png")  # what lifetime_plots writes there
 CHECKPOINTS = "checkpoint"
 CHECKPOINT = "checkpoint.json"
 PROFILE_COLUMNS = ["update", "cycles", *WEAR_COLUMNS]
@@ -68,6 +69,8 @@ def start_folder(folder: Path, columns: list[str], record: dict) -> None:
         raise ModelError([f"out: {existing} exists and is not a folder; give a folder path"])
     (folder / CHECKPOINTS).mkdir(parents=True, exist_ok=True)
     (folder / SUMMARY).unlink(missing_ok=True)
+    for name in FIGURE_FILES:  # an earlier run's: never mix two runs
+        (folder / FIGURES / name).unlink(missing_ok=True)
     for old in (folder / CHECKPOINTS).glob("state_*.npz"):
         old.unlink()
     _write_rows(folder / TABLE, columns, [])

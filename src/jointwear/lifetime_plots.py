@@ -15,6 +15,7 @@ import pandas as pd
 from matplotlib import colormaps
 from matplotlib.figure import Figure  # figures without pyplot: no global backend switch
 
+from .lifetime_files import FIGURE_FILES
 from .lifetime_records import GROWTH_MARK, cycles_at, driver_columns
 from .model import Model
 
@@ -102,11 +103,7 @@ def save_life_figures(
 ) -> list[Path]:
     """Write life_wear.png and life_profiles.png into ``folder``; return their paths."""
     folder.mkdir(parents=True, exist_ok=True)
-    written = []
-    for name, fig in (
-        ("life_wear", plot_life_wear(model, table, driver)),
-        ("life_profiles", plot_life_profiles(model, table, profiles)),
-    ):
-        fig.savefig(folder / f"{name}.png", dpi=150)
-        written.append(folder / f"{name}.png")
-    return written
+    figures = (plot_life_wear(model, table, driver), plot_life_profiles(model, table, profiles))
+    for name, fig in zip(FIGURE_FILES, figures, strict=True):
+        fig.savefig(folder / name, dpi=150)
+    return [folder / name for name in FIGURE_FILES]
