@@ -26,6 +26,7 @@ from typer.testing import CliRunner
 import jointwear as jw
 from jointwear.cli import app
 from jointwear.lifetime import life
+from jointwear.lifetime_records import clearance_growth
 from jointwear.lifetime_settings import cycle_driver
 from jointwear.sweep import sweep
 
@@ -108,6 +109,28 @@ def final_profile(results) -> np.ndarray:
     """Depths [m] of the last update, in the wear table's order (joint, surface, sector)."""
     rows = results.profiles[results.profiles["update"] == results.profiles["update"].max()]
     return rows["depth_m"].to_numpy()
+
+
+@pytest.mark.parametrize("psi", [(0.0, 7.0), (-1.0, 0.5), (2.0, 2.0), (0.31, 0.37)])
+def test_clearance_growth_against_a_brute_force_search(psi):
+    rng = np.random.default_rng(7)
+    bearing, journal = rng.random(36) * 1e-5, rng.random(36) * 1e-5
+    # The gap increase in every direction theta (bearing frame) at every relative angle psi,
+    # the profiles interpolated periodically between the sector centres, on grids of 0.1
+    # deg: at most the exact largest value, and below it by the profiles' slope (up to 1e-5
+    # m per 10 deg sector) times the grids' half spacing, 1e-7 m at most.
+    centres = (np.arange(36) + 0.5) * 2 * math.pi / 36
+    theta = np.linspace(0.0, 2 * math.pi, 3601)[:, None]
+    psis = np.linspace(psi[0], psi[1], max(2, round(math.degrees(psi[1] - psi[0]) * 10)))
+    found = max(
+        (np.interp(theta, centres, bearing, period=2 * math.pi)
+         + np.interp(theta - block, centres, journal, period=2 * math.pi)).max()
+        for block in np.array_split(psis, min(20, psis.size))
+    )  # fmt: skip
+    growth = clearance_growth(bearing, journal, psi)
+    assert found - 1e-18 <= growth <= found + 1e-7
+    if psi[1] - psi[0] >= 2 * math.pi:
+        assert growth == bearing.max() + journal.max()
 
 
 def test_without_extrapolation_it_is_the_direct_simulation(tmp_path):

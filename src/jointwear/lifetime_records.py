@@ -29,7 +29,10 @@ GROWTH_MARK = 0.5  # the summary reports the cycles at which the growth reached 
 
 
 def relative_angle_range(joint: RevoluteJoint, runs: Sequence[Results]) -> tuple[float, float]:
-    """Smallest and largest angle psi [rad] of the journal's body relative to the bearing's."""
+    """Smallest and largest angle psi [rad] of the journal's body relative to the bearing's.
+
+    Over the output rows of ``runs``.
+    """
     psi = np.concatenate(
         [
             _angle(r.timeseries, joint.bodies[1]) - _angle(r.timeseries, joint.bodies[0])
@@ -61,10 +64,14 @@ def clearance_growth(
     if hi - lo >= 2.0 * math.pi:
         return float(bearing.max() + journal.max())
     n = bearing.shape[0]
-    centres = (np.arange(n) + 0.5) * 2.0 * math.pi / n
-    # For a given psi the sum is piecewise linear in theta: its largest value lies on a sector
-    # centre of one surface or the other. psi is sampled at a quarter of a sector.
-    psis = np.linspace(lo, hi, max(2, math.ceil((hi - lo) / (0.25 * 2.0 * math.pi / n)) + 1))
+    sector = 2.0 * math.pi / n
+    centres = (np.arange(n) + 0.5) * sector
+    # In (theta, phi = theta - psi) the sum is linear on every cell between sector centres,
+    # so its largest value on the strip lo <= psi <= hi lies on a vertex of a cell cut by
+    # the strip: a pair of centres (psi a whole number of sectors) or a cell edge on the
+    # strip's border (psi = lo or hi). For each such psi, it lies on a centre of either
+    # surface.
+    psis = np.concatenate([[lo, hi], np.arange(math.ceil(lo / sector), hi / sector) * sector])
     largest = 0.0
     for block in np.array_split(psis, math.ceil(psis.size * 2 * n / GRID_CELLS)):
         theta = np.concatenate(
