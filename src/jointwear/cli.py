@@ -400,7 +400,7 @@ def life(
         bool | None,
         typer.Option(
             "--feedback/--no-feedback",
-            help="Worn profiles feed back into the contact [default: the model's setting].",
+            help="Worn profiles feed back into the contact (default: as the model says).",
             show_default=False,
         ),
     ] = None,
@@ -444,10 +444,11 @@ def life(
         bar.close()
     summary = results.summary
     plain = {"soft_wrap": True, "markup": False, "highlight": False}
+    unsteady = summary["unsteady_updates"]
     out.print(
         f"{summary['status']}: {summary['message']}; {summary['cycles_reached']:,} cycles in "
-        f"{summary['updates']} updates ({summary['simulated_cycles']:,} simulated), "
-        f"{summary['wall_s']:.3g} s wall",
+        f"{summary['updates']} updates ({summary['simulated_cycles']:,} simulated"
+        f"{f', {unsteady} unsteady' if unsteady else ''}), {summary['wall_s']:.3g} s wall",
         **plain,
     )
     for name, joint in summary["clearance_joints"].items():

@@ -196,7 +196,7 @@ class LifeRun:
     def _past_limit(
         self, wear: NDArray[np.float64], growth: NDArray[np.float64], before: int, after: int
     ) -> bool:
-        """Stop if profiles ``wear`` pass a limit (module docstring); True if so."""
+        """Stop if profiles ``wear`` pass a limit (``lifetime.life``); True if so."""
         for k, joint in enumerate(self.model.clearance_joints):
             c = joint.clearance
             journal = wear[k, 1, : c.sectors].max()
