@@ -243,6 +243,10 @@ def test_resume_gives_the_uninterrupted_run(tmp_path, how):
     if how == "exception":
         with pytest.raises(Crash):
             life(FOURBAR, folder, **settings, progress=stop_at_third)
+        # As if it died while writing the next update's rows, before its checkpoint.
+        for name in ("life.csv", "profiles.csv"):
+            with open(folder / name, "a") as f:
+                f.write("4,101,1")
     else:
         stopped = life(FOURBAR, folder, **settings, progress=stop_at_third)
         assert stopped.status == "interrupted"

@@ -154,10 +154,13 @@ def write_summary(folder: Path, summary: dict) -> None:
 
 
 def _cut(path: Path, update: int) -> None:
-    """Keep the header and the rows of updates up to ``update`` (first column)."""
+    """Keep the header and the whole rows of updates up to ``update`` (first column).
+
+    A row cut short by a crash while it was written is not whole.
+    """
     with open(path, newline="") as f:
         rows = list(csv.reader(f))
-    kept = [row for row in rows[1:] if int(row[0]) <= update]
+    kept = [row for row in rows[1:] if len(row) == len(rows[0]) and int(row[0]) <= update]
     if len(kept) < len(rows) - 1:
         _write_rows(path, rows[0], kept)
 
