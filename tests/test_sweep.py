@@ -12,6 +12,7 @@ import shutil
 import signal
 import subprocess
 import sys
+import threading
 import time
 from pathlib import Path
 
@@ -24,6 +25,7 @@ from jointwear.cli import app
 from jointwear.model_errors import ModelError
 from jointwear.sweep import sweep
 from jointwear.sweep_cases import make_cases, make_plan, parse_vary, si_value
+from jointwear.sweep_runners import _start_method
 
 ROOT = Path(__file__).parents[1]
 FOURBAR = ROOT / "examples" / "flores2009_fourbar.toml"
@@ -414,3 +416,18 @@ def test_ctrl_c_keeps_finished_cases_and_writes_the_table(tmp_path, workers, sta
     summary = json.loads((out / "cases" / "t_end=1000" / "summary.json").read_text())
     assert summary["status"] == "interrupted"
     assert os.path.getsize(out / "sweep.csv") > 0
+
+
+def test_local_processes_are_forked_only_from_a_single_threaded_process():
+    release = threading.Event()
+    other = threading.Thread(target=release.wait)
+    other.start()
+    try:
+        assert _start_method() in {"forkserver", "spawn"}
+    finally:
+        release.set()
+        other.join()
+    if sys.platform == "linux":  # a fresh process has no other thread: workers are forked
+        code = "from jointwear.sweep_runners import _start_method; print(_start_method())"
+        fresh = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+        assert fresh.stdout.strip() == "fork", fresh.stderr

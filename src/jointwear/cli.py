@@ -49,8 +49,11 @@ def _fail(error: ModelError) -> typer.Exit:
     return typer.Exit(code=2)
 
 
-def _progress(label: str, count: str) -> Progress:
-    """A transient rich progress bar on stderr: label, bar, count, elapsed time and ETA."""
+def _progress(label: str, count: str, refresh_thread: bool = True) -> Progress:
+    """A transient rich progress bar on stderr: label, bar, count, elapsed time and ETA.
+
+    Without ``refresh_thread`` it is redrawn only when updated.
+    """
     return Progress(
         TextColumn(label),
         BarColumn(),
@@ -60,6 +63,7 @@ def _progress(label: str, count: str) -> Progress:
         TimeRemainingColumn(),
         console=err,
         transient=True,
+        auto_refresh=refresh_thread,
     )
 
 
@@ -252,12 +256,13 @@ class _SweepProgress:
                 err.print(line, markup=False, highlight=False, soft_wrap=True)
             return
         if self.bar is None:
-            self.bar = _progress("sweep", "{task.completed}/{task.total} cases")
+            # no refresh thread: the sweep forks its local processes only while it has none
+            self.bar = _progress("sweep", "{task.completed}/{task.total} cases", False)
             self.bar.start()
             self.task = self.bar.add_task("sweep", total=total)
         if line is not None:
             self.bar.console.print(line, markup=False, highlight=False, soft_wrap=True)
-        self.bar.update(self.task, completed=done)
+        self.bar.update(self.task, completed=done, refresh=True)
 
     def close(self) -> None:
         if self.bar is not None:

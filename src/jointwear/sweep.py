@@ -17,7 +17,6 @@ finished cases are kept and the table is written with what is done.
 
 from __future__ import annotations
 
-import importlib.util
 import json
 import math
 import os
@@ -188,8 +187,6 @@ def _check_options(
     for option, value in (("--cycles", cycles), ("--workers", workers)):
         if value is not None and not _whole(value):
             problems.append(f"{option}: got {value!r}; expected a whole number >= 1")
-    if cycles is not None and _whole(cycles) and not importlib.util.find_spec("jointwear.lifetime"):
-        problems.append("--cycles: this jointwear has no long-life wear runs yet; leave it out")
     if workers is not None and scheduler is not None:
         problems.append(
             "--workers: only for local processes; with --scheduler the cluster's workers run "

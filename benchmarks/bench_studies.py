@@ -1,0 +1,128 @@
+"""Benchmark of the studies built on the engine (issue: long-life wear and parameter studies).
+
+Two targets, each measured as whole ``jointwear`` processes (what a user waits for), with the
+numba cache warm:
+
+- **sweep**: a 9-case sweep of 5-turn runs of the paper's four-bar (friction coefficient
+  0.05/0.1/0.2 x bearing radius 10.0/10.1/10.2 mm, ``--no-figures``), run with
+  ``--workers 1`` (one after the other, in the sweep's own process) and with the default
+  (one local process per core), alternately, ``--repeats`` times each into fresh folders;
+  the medians and their ratio (target: close to one half on two cores).
+- **life**: the paper's four-bar worn over 1e6 crank cycles with the default settings
+  (target: under 60 s); wall time, updates, simulated cycles and the reported status.
+
+Usage (from the repository root, after ``make install``)::
+
+    .venv/bin/python benchmarks/bench_studies.py               # both, a few minutes
+    .venv/bin/python benchmarks/bench_studies.py --no-life --repeats 1 --t-end 0.02  # smoke
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+FOURBAR = ROOT / "examples" / "flores2009_fourbar.toml"
+CLEARANCE = "joints.coupler_follower.clearance"
+VARY = [
+    f"{CLEARANCE}.friction_coefficient=0.05,0.1,0.2",
+    f"{CLEARANCE}.bearing_radius=10.0 mm,10.1 mm,10.2 mm",
+]
+
+
+def jointwear(*args: str) -> float:
+    """Wall time [s] of one ``jointwear`` process; raises if it fails."""
+    command = [sys.executable, "-m", "jointwear", *args]
+    start = time.perf_counter()
+    subprocess.run(command, check=True, capture_output=True, cwd=ROOT)
+    return time.perf_counter() - start
+
+
+def sweep_times(t_end: float, repeats: int) -> dict:
+    """Median wall times [s] of the sweep serial and on all cores, run alternately."""
+    vary = [arg for path in VARY for arg in ("--vary", path)]
+    common = [str(FOURBAR), *vary, "--t-end", repr(t_end), "--no-figures"]
+    times: dict[str, list[float]] = {"serial": [], "parallel": []}
+    with tempfile.TemporaryDirectory() as scratch:
+        for repeat in range(repeats):
+            for kind, extra in (("serial", ["--workers", "1"]), ("parallel", [])):
+                out = Path(scratch) / f"{kind}{repeat}"
+                times[kind].append(jointwear("sweep", *common, "--out", str(out), *extra))
+    serial, parallel = (statistics.median(times[k]) for k in ("serial", "parallel"))
+    return {
+        "cases": 9,
+        "t_end_s": t_end,
+        "cores": os.cpu_count(),
+        "serial_s": times["serial"],
+        "parallel_s": times["parallel"],
+        "serial_median_s": serial,
+        "parallel_median_s": parallel,
+        "parallel_over_serial": parallel / serial,
+    }
+
+
+def life_run(cycles: int) -> dict:
+    """Wall time [s] of the life run and what its summary reports."""
+    with tempfile.TemporaryDirectory() as scratch:
+        out = Path(scratch) / "life"
+        args = ["life", str(FOURBAR), "--cycles", str(cycles), "--out", str(out), "--no-figures"]
+        command = [sys.executable, "-m", "jointwear", *args]
+        start = time.perf_counter()
+        process = subprocess.run(command, capture_output=True, cwd=ROOT)
+        wall = time.perf_counter() - start
+        if process.returncode not in (0, 1):  # 1: stopped early, e.g. at the clearance limit
+            raise RuntimeError(process.stderr.decode())
+        summary = json.loads((out / "summary.json").read_text())
+    joint = summary["clearance_joints"]["coupler_follower"]
+    return {
+        "cycles_asked": cycles,
+        "process_wall_s": wall,
+        "status": summary["status"],
+        "cycles_reached": summary["cycles_reached"],
+        "updates": summary["updates"],
+        "simulated_cycles": summary["simulated_cycles"],
+        "simulated_wall_s": summary["wall_s"],
+        "max_wear_depth_journal_m": joint["max_wear_depth_journal_m"],
+        "cycles_to_clearance_growth_50pct": joint["cycles_to_clearance_growth_50pct"],
+    }
+
+
+def main(argv: list[str] | None = None) -> dict:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--t-end", type=float, default=0.2, help="per sweep case [s]; 5 turns")
+    parser.add_argument("--repeats", type=int, default=3, help="sweeps of each kind")
+    parser.add_argument("--cycles", type=int, default=1_000_000, help="of the life run")
+    parser.add_argument("--no-sweep", dest="sweep", action="store_false")
+    parser.add_argument("--no-life", dest="life", action="store_false")
+    parser.add_argument("--out", type=Path, default=ROOT / "benchmarks" / "studies.json")
+    args = parser.parse_args(argv)
+    jointwear("check", str(FOURBAR))  # a warm interpreter cache before anything is timed
+    report: dict = {}
+    if args.sweep:
+        report["sweep"] = sweep = sweep_times(args.t_end, args.repeats)
+        print(
+            f"sweep, 9 cases of {args.t_end} s on {sweep['cores']} cores: serial "
+            f"{sweep['serial_median_s']:.2f} s, parallel {sweep['parallel_median_s']:.2f} s "
+            f"(median of {args.repeats}); parallel/serial {sweep['parallel_over_serial']:.2f}"
+        )
+    if args.life:
+        report["life"] = life = life_run(args.cycles)
+        print(
+            f"life, {args.cycles:,} cycles asked: {life['status']} at {life['cycles_reached']:,}"
+            f" cycles, {life['updates']} updates ({life['simulated_cycles']} simulated), "
+            f"{life['process_wall_s']:.1f} s wall"
+        )
+    args.out.write_text(json.dumps(report, indent=2))
+    return report
+
+
+if __name__ == "__main__":
+    main()
