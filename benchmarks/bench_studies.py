@@ -1,15 +1,17 @@
 """Benchmark of the studies built on the engine (issue: long-life wear and parameter studies).
 
-Two targets, each measured as whole ``jointwear`` processes (what a user waits for), with the
-numba cache warm:
+Two targets, measured with the numba cache warm:
 
 - **sweep**: a 9-case sweep of 5-turn runs of the paper's four-bar (friction coefficient
   0.05/0.1/0.2 x bearing radius 10.0/10.1/10.2 mm, ``--no-figures``), run with
   ``--workers 1`` (one after the other, in the sweep's own process) and with the default
   (one local process per core), alternately, ``--repeats`` times each into fresh folders;
-  the medians and their ratio (target: close to one half on two cores).
-- **life**: the paper's four-bar worn over 1e6 crank cycles with the default settings
-  (target: under 60 s); wall time, updates, simulated cycles and the reported status.
+  the medians and their ratio (target: close to one half on two cores). Once as whole
+  ``jointwear sweep`` processes (what a user waits for), once as ``jw.sweep`` calls in this
+  process.
+- **life**: the ``jointwear life`` process wearing the paper's four-bar over 1e6 crank cycles
+  with the default settings (target: under 60 s); wall time, updates, simulated cycles and
+  the reported status.
 
 Usage (from the repository root, after ``make install``)::
 
@@ -29,6 +31,8 @@ import tempfile
 import time
 from pathlib import Path
 
+import jointwear as jw
+
 ROOT = Path(__file__).resolve().parents[1]
 FOURBAR = ROOT / "examples" / "flores2009_fourbar.toml"
 CLEARANCE = "joints.coupler_follower.clearance"
@@ -47,26 +51,39 @@ def jointwear(*args: str) -> float:
 
 
 def sweep_times(t_end: float, repeats: int) -> dict:
-    """Median wall times [s] of the sweep serial and on all cores, run alternately."""
+    """Median wall times [s] of the sweep serial and on all cores, run alternately.
+
+    Both as ``jointwear sweep`` processes and as ``jw.sweep`` calls in this process, whose
+    kernels are loaded (the interpreter start and imports, about 1.5 s, are not spread
+    over the cores).
+    """
     vary = [arg for path in VARY for arg in ("--vary", path)]
     common = [str(FOURBAR), *vary, "--t-end", repr(t_end), "--no-figures"]
-    times: dict[str, list[float]] = {"serial": [], "parallel": []}
+    in_process = {path: texts.split(",") for path, texts in (v.split("=") for v in VARY)}
+    jw.simulate(jw.load_model(FOURBAR, ["solver.t_end=0.001"]))  # load the kernels
+    times: dict[str, list[float]] = {}
     with tempfile.TemporaryDirectory() as scratch:
         for repeat in range(repeats):
-            for kind, extra in (("serial", ["--workers", "1"]), ("parallel", [])):
+            for kind, workers in (("serial", 1), ("parallel", None)):
                 out = Path(scratch) / f"{kind}{repeat}"
-                times[kind].append(jointwear("sweep", *common, "--out", str(out), *extra))
-    serial, parallel = (statistics.median(times[k]) for k in ("serial", "parallel"))
-    return {
-        "cases": 9,
-        "t_end_s": t_end,
-        "cores": os.cpu_count(),
-        "serial_s": times["serial"],
-        "parallel_s": times["parallel"],
-        "serial_median_s": serial,
-        "parallel_median_s": parallel,
-        "parallel_over_serial": parallel / serial,
-    }
+                extra = [] if workers is None else ["--workers", str(workers)]
+                wall = jointwear("sweep", *common, "--out", str(out), *extra)
+                times.setdefault(f"process_{kind}", []).append(wall)
+                start = time.perf_counter()
+                jw.sweep(
+                    FOURBAR,
+                    out.with_name(f"{out.name}_in_process"),
+                    vary=in_process,
+                    overrides=[f"solver.t_end={t_end!r}"],
+                    workers=workers,
+                    figures=False,
+                )
+                times.setdefault(f"call_{kind}", []).append(time.perf_counter() - start)
+    report: dict = {"cases": 9, "t_end_s": t_end, "cores": os.cpu_count(), "times_s": times}
+    for way in ("process", "call"):
+        serial, parallel = (statistics.median(times[f"{way}_{k}"]) for k in ("serial", "parallel"))
+        report[way] = {"serial_s": serial, "parallel_s": parallel, "ratio": parallel / serial}
+    return report
 
 
 def life_run(cycles: int) -> dict:
@@ -108,11 +125,13 @@ def main(argv: list[str] | None = None) -> dict:
     report: dict = {}
     if args.sweep:
         report["sweep"] = sweep = sweep_times(args.t_end, args.repeats)
-        print(
-            f"sweep, 9 cases of {args.t_end} s on {sweep['cores']} cores: serial "
-            f"{sweep['serial_median_s']:.2f} s, parallel {sweep['parallel_median_s']:.2f} s "
-            f"(median of {args.repeats}); parallel/serial {sweep['parallel_over_serial']:.2f}"
-        )
+        for way, label in (("process", "jointwear sweep process"), ("call", "jw.sweep call")):
+            times = sweep[way]
+            print(
+                f"sweep, 9 cases of {args.t_end} s, {label}: serial {times['serial_s']:.2f} s, "
+                f"parallel ({sweep['cores']} cores) {times['parallel_s']:.2f} s, "
+                f"ratio {times['ratio']:.2f} (medians of {args.repeats})"
+            )
     if args.life:
         report["life"] = life = life_run(args.cycles)
         print(

@@ -25,6 +25,7 @@ from jointwear.cli import app
 from jointwear.model_errors import ModelError
 from jointwear.sweep import sweep
 from jointwear.sweep_cases import make_cases, make_plan, parse_vary, si_value
+from jointwear.sweep_plots import plot_sweep, quantity
 from jointwear.sweep_runners import _start_method
 
 ROOT = Path(__file__).parents[1]
@@ -133,6 +134,40 @@ def test_one_comparison_figure_per_headline_figure(local_sweep):
     for name in HEADLINE:
         assert f"coupler_follower.{name}.png" in figures
     assert all(p.stat().st_size > 5000 for p in (out / "figures").glob("*.png"))
+
+
+def test_comparison_figures_speak_the_sweeps_units(local_sweep):
+    _, out = local_sweep
+    table = pd.read_parquet(out / "sweep.parquet")
+    given = {FRICTION: {0.05: "0.05", 0.1: "0.1"}, RADIUS: {0.01: "10.0 mm", 0.0101: "10.1 mm"}}
+    figure = plot_sweep(table, "coupler_follower.max_wear_depth_journal_m", given)
+    ax = figure.axes[0]
+    assert [t.get_text() for t in ax.get_xticklabels()] == ["0.05", "0.1"]
+    assert [t.get_text() for t in ax.get_legend().get_texts()] == [
+        "bearing radius 10.0 mm",
+        "bearing radius 10.1 mm",
+    ]
+    assert ax.get_ylabel() == "max wear depth journal [µm]"
+    for line, radius in zip(ax.get_lines(), (0.01, 0.0101), strict=True):
+        rows = table[table[RADIUS] == radius]
+        depth = rows["coupler_follower.max_wear_depth_journal_m"].to_numpy()
+        assert line.get_ydata() == pytest.approx(depth * 1e6)
+
+
+@pytest.mark.parametrize(
+    ("column", "label", "factor"),
+    [
+        ("j.max_wear_depth_journal_m", "max wear depth journal [µm]", 1e6),
+        ("j.worn_volume_m3", "worn volume [mm³]", 1e9),
+        ("torque_range_motor_n_m", "torque range motor [N m]", 1.0),
+        ("j.max_contact_force_n", "max contact force [kN]", 1e-3),
+        ("j.contact_time_fraction", "contact time [%]", 100.0),
+        ("accepted_steps", "accepted steps", 1.0),
+    ],
+)
+def test_axis_units_come_from_the_column_suffix(column, label, factor):
+    assert quantity(column) == (label, factor)
+    assert quantity("j.sliding_distance_m", largest=0.6) == ("sliding distance [m]", 1.0)
 
 
 def test_a_dask_cluster_gives_the_same_table(local_sweep, tmp_path):

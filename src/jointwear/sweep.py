@@ -152,8 +152,12 @@ def sweep(
         if figures:
             from .sweep_plots import save_sweep_figures  # matplotlib only when drawing
 
+            given = {  # per varied path, its table values as the sweep was given them
+                path: dict(zip(table[path], [c.values[path] for c in cases], strict=True))
+                for path in texts
+            }
             drawn = save_sweep_figures(
-                table, _headline_columns(table, models), list(texts), folder / "figures"
+                table, _headline_columns(table, models), given, folder / "figures"
             )
     return SweepResults(folder, table, skipped, drawn, interrupted)
 
