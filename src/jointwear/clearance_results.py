@@ -21,6 +21,7 @@ from .kernels import contact_steps as cs
 from .model import Model
 
 SURFACES = ("bearing", "journal")
+UM = 1e6  # micrometres per metre, for messages and figures
 WEAR_COLUMNS = ["joint", "surface", "sector", "angle_deg", "depth_m"]
 IMPACT_COLUMNS = [
     "time_s",

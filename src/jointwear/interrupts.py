@@ -2,18 +2,28 @@
 
 from __future__ import annotations
 
+import os
 import signal
 import threading
 from collections.abc import Iterator
 from contextlib import contextmanager
+
+_open: tuple[int, list[bool]] | None = None  # (process id, flag) of the outermost open block
 
 
 @contextmanager
 def stop_requests() -> Iterator[list[bool]]:
     """Within the block, SIGINT and SIGTERM set ``flag[0]`` instead of stopping the process.
 
-    Only the main thread can install handlers; elsewhere the flag simply stays False.
+    Blocks nest: an inner block (a run inside a life run or a sweep) shares the outer one's
+    flag, so a request that the inner block's code did not act on (it arrived as a run was
+    ending) still reaches the outer loop. A forked child opens its own. Only the main
+    thread can install handlers; elsewhere the flag simply stays False.
     """
+    global _open
+    if _open is not None and _open[0] == os.getpid():
+        yield _open[1]
+        return
     flag = [False]
     if threading.current_thread() is not threading.main_thread():
         yield flag
@@ -23,8 +33,10 @@ def stop_requests() -> Iterator[list[bool]]:
         flag[0] = True
 
     previous = {s: signal.signal(s, request_stop) for s in (signal.SIGINT, signal.SIGTERM)}
+    _open = (os.getpid(), flag)
     try:
         yield flag
     finally:
+        _open = None
         for s, handler in previous.items():
             signal.signal(s, handler)

@@ -13,10 +13,12 @@ multibody systems with revolute joint wear", Wear 268 (2010) 643-652, a life run
    and a transient extrapolated as if it lasted the whole update distorts the result (the
    paper's four-bar passes through short bursts of chaotic impacts, which one measured
    cycle per update stretches over much of its life). If ``max_update_cycles`` cycles do
-   not settle, the update extrapolates nothing and the next tries again;
-3. extrapolates it over as many further cycles as keep the largest depth it adds to any
-   sector of any surface within ``max_change`` (a depth, or a share of the joint's current
-   clearance, nominal plus growth), never past ``cycles`` in all; both surfaces' profiles
+   not settle, the motion is taken as chaotic and the mean wear of their second half (past
+   the transient) as the wear of one cycle;
+3. extrapolates it over as many further cycles as keep the largest depth the update (its
+   simulated and extrapolated cycles) adds to any sector of any surface within
+   ``max_change`` (a depth, or a share of the joint's current clearance, nominal plus
+   growth), never past ``cycles`` in all; both surfaces' profiles
    are updated, and the next run starts from the last state with them (``RunState.with_wear``);
 4. repeats 2-3 until ``cycles`` cycles are done.
 
@@ -25,9 +27,10 @@ speed; a harmonic function: 2 pi / angular frequency). The run stops early, with
 and a message, if a simulated run fails or is interrupted (Ctrl-C, SIGTERM: the update in
 progress is lost, nothing else), if a journal would be worn through, or if a joint's
 effective clearance (``lifetime_records``) would grow by more than ``max_growth`` times its
-nominal clearance: the contact stiffness and the Hertz patch are computed from the nominal
-radii, and the worn profile enters the contact only as a radial depth (its slope neglected),
-so past a few times the nominal clearance the model no longer describes the joint.
+nominal clearance (default 1: doubled): the contact stiffness and the Hertz patch are
+computed from the nominal radii, and the worn profile enters the contact only as a radial
+depth (its slope neglected), so well past the nominal clearance the model no longer
+describes the joint.
 """
 
 from __future__ import annotations
@@ -122,13 +125,13 @@ def life(
         last ``measure_cycles`` and of the ``measure_cycles`` before them agree: no sector's
         differs by more than this share of the deepest [-].
     max_update_cycles
-        At most this many cycles per update. If they never agree (a burst of chaotic impacts,
-        a drifting regime) nothing is extrapolated: the update is a stretch of direct
-        simulation, its row says ``steady`` 0, and the next update tries again. (A lasting
-        chaotic regime is extrapolated by averaging: raise ``measure_cycles``.)
+        At most this many cycles per update. If they never agree (chaotic impacts, a
+        drifting regime) the mean wear of their second half is extrapolated, and the
+        update's row says ``steady`` 0.
     max_change
-        Largest depth an update's extrapolation may add to a sector: a length (``"1 um"``,
-        or a number [m]) or a share of the joint's current clearance (``"2%"``).
+        Largest depth an update (simulated and extrapolated cycles) may add to a sector: a
+        length (``"1 um"``, or a number [m]) or a share of the joint's current clearance
+        (``"2%"``).
     extrapolate
         False: no extrapolation, every cycle is simulated (a direct run, update by update).
     feedback
@@ -178,8 +181,8 @@ def life(
     else:
         files.start_folder(folder, table_columns(model, driver), record)
         point = files.Checkpoint(0, 0, 0, 0.0, None)
-    run = LifeRun(model, settings, driver, period, folder, record, point.wall_s)
     with stop_requests() as stop:
+        run = LifeRun(model, settings, driver, period, folder, record, point.wall_s, stop)
         while point.cycles < cycles and run.status == "success":
             point = run.update(point)
             if progress is not None and run.status == "success":

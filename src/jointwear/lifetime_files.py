@@ -32,6 +32,8 @@ FIGURE_FILES = ("life_wear.png", "life_profiles.png")  # what lifetime_plots wri
 CHECKPOINTS = "checkpoint"
 CHECKPOINT = "checkpoint.json"
 PROFILE_COLUMNS = ["update", "cycles", *WEAR_COLUMNS]
+# Settings a resumed run may change: they only stop a run, so the updates written stand
+RESUMABLE_CHANGES = ("max_growth",)
 
 
 @dataclass(frozen=True)
@@ -68,6 +70,7 @@ def start_folder(folder: Path, columns: list[str], record: dict) -> None:
     if not existing.is_dir():
         raise ModelError([f"out: {existing} exists and is not a folder; give a folder path"])
     (folder / CHECKPOINTS).mkdir(parents=True, exist_ok=True)
+    (folder / CHECKPOINTS / CHECKPOINT).unlink(missing_ok=True)  # first: it names the states
     (folder / SUMMARY).unlink(missing_ok=True)
     for name in FIGURE_FILES:  # an earlier run's: never mix two runs
         (folder / FIGURES / name).unlink(missing_ok=True)
@@ -112,7 +115,8 @@ def load_checkpoint(folder: Path, record: dict) -> Checkpoint:
     Raises
     ------
     ModelError
-        If ``folder`` holds no life run, or one started with other settings or another model.
+        If ``folder`` holds no life run, a damaged one, or one started with other settings
+        (but for RESUMABLE_CHANGES) or another model.
     """
     path = folder / CHECKPOINTS / CHECKPOINT
     try:
@@ -126,7 +130,7 @@ def load_checkpoint(folder: Path, record: dict) -> Checkpoint:
         f"{key}: {given['settings'].get(key)!r} differs from the {value!r} the run in {folder} "
         "was started with; give the same settings to resume, or start afresh without --resume"
         for key, value in data["settings"].items()
-        if given["settings"].get(key) != value
+        if given["settings"].get(key) != value and key not in RESUMABLE_CHANGES
     ]
     if data["model"] != given["model"]:
         problems.append(
@@ -136,9 +140,13 @@ def load_checkpoint(folder: Path, record: dict) -> Checkpoint:
         )
     if problems:
         raise ModelError(problems)
-    for name in (TABLE, PROFILES):
-        _cut(folder / name, data["update"] if data["state"] else -1)
-    state = load_run_state(folder / CHECKPOINTS / data["state"]) if data["state"] else None
+    try:
+        for name in (TABLE, PROFILES):
+            _cut(folder / name, data["update"] if data["state"] else -1)
+        state = load_run_state(folder / CHECKPOINTS / data["state"]) if data["state"] else None
+    except (OSError, ValueError, KeyError) as error:
+        problem = f"out: the life run in {folder} cannot be resumed ({error}); "
+        raise ModelError([problem + "start afresh without --resume"]) from None
     counts = (data[key] for key in ("update", "cycles", "simulated_cycles", "wall_s"))
     return Checkpoint(*counts, state)
 

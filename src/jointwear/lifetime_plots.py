@@ -15,13 +15,13 @@ import pandas as pd
 from matplotlib import colormaps
 from matplotlib.figure import Figure  # figures without pyplot: no global backend switch
 
+from .clearance_results import UM
 from .lifetime_files import FIGURE_FILES
 from .lifetime_records import GROWTH_MARK, cycles_at, driver_columns
 from .model import Model
 
 PROFILE_COUNTS = 5  # profiles drawn: at about 1/5, 2/5, ... of the cycles reached
-UM = 1e6  # [µm/m]
-SURFACES = ("journal", "bearing")  # the journal first, as in the paper's Figs. 8-10
+PLOT_ORDER = ("journal", "bearing")  # the journal first, as in the paper's Figs. 8-10
 
 
 def plot_life_wear(model: Model, table: pd.DataFrame, driver: str) -> Figure:
@@ -31,7 +31,7 @@ def plot_life_wear(model: Model, table: pd.DataFrame, driver: str) -> Figure:
     cycles = table["cycles"].to_numpy()
     for joint in model.clearance_joints:
         name = joint.name
-        for surface, style in zip(SURFACES, ("-", "--"), strict=True):
+        for surface, style in zip(PLOT_ORDER, ("-", "--"), strict=True):
             values = table[f"{name}.max_wear_depth_{surface}_m"] * UM
             depth.plot(cycles, values, style, label=f"{name}: {surface}, deepest sector")
         growth = table[f"{name}.clearance_growth_m"] * UM
@@ -77,7 +77,7 @@ def plot_life_profiles(model: Model, table: pd.DataFrame, profiles: pd.DataFrame
     colours = colormaps["viridis"](np.linspace(0.0, 0.9, len(updates)))
     fig = Figure(figsize=(10.0, 5.0 * len(joints) + 0.5), layout="constrained")
     for k, joint in enumerate(joints):
-        for s, surface in enumerate(SURFACES):
+        for s, surface in enumerate(PLOT_ORDER):
             ax = fig.add_subplot(len(joints), 2, 2 * k + s + 1, projection="polar")
             for update, colour in zip(updates, colours, strict=True):
                 rows = profiles[

@@ -14,6 +14,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from . import lifetime_files as files
+from .clearance_results import UM
 from .lifetime_records import (
     clearance_growths,
     profile_rows,
@@ -26,7 +27,6 @@ from .results import Results
 from .run_state import RunState
 from .simulate import simulate
 
-UM = 1e6  # [µm/m]
 RESUME = "; --resume (resume=True) goes on from there"
 
 
@@ -43,6 +43,8 @@ class LifeRun:
         The run's folder, and the settings and model its checkpoints carry.
     wall_before
         Wall time of the earlier sessions of the run [s].
+    stop_requested
+        The flag of ``interrupts.stop_requests``: once set, no further cycle is simulated.
     """
 
     def __init__(
@@ -54,9 +56,10 @@ class LifeRun:
         folder: Path,
         record: dict,
         wall_before: float,
+        stop_requested: list[bool],
     ) -> None:
         self.model, self.settings, self.driver, self.period = model, settings, driver, period
-        self.folder, self.record = folder, record
+        self.folder, self.record, self.stop_requested = folder, record, stop_requested
         self.wall_before, self.start = wall_before, time.perf_counter()
         self.status, self.message = "success", f"reached {settings.cycles} cycles"
 
@@ -92,9 +95,10 @@ class LifeRun:
         final = runs[-1].final
         psi = [relative_angle_range(joint, measured) for joint in model.clearance_joints]
         extra = 0
-        if settings.extrapolate and steady and not settling:
+        if settings.extrapolate and not settling:
             growth = clearance_growths(model, final.wear, psi)
-            extra = self._extrapolated_cycles(rate, growth, left - simulated)
+            done = final.wear - (0.0 if point.state is None else point.state.wear)
+            extra = self._extrapolated_cycles(rate, done, growth, left - simulated)
         wear = final.wear + extra * rate
         growth = clearance_growths(model, wear, psi)
         cycles = point.cycles + simulated + extra
@@ -102,9 +106,10 @@ class LifeRun:
             return point
         update = 0 if settling else point.update + 1
         counts = (update, cycles, point.simulated_cycles + simulated, extra, int(steady))
-        row = update_row(model, self.driver, counts, wear, rate, growth, measured, self.wall())
+        wall = self.wall()
+        row = update_row(model, self.driver, counts, wear, rate, growth, measured, wall)
         files.append_update(self.folder, row, profile_rows(model, update, cycles, wear))
-        new = files.Checkpoint(update, cycles, counts[2], self.wall(), final.with_wear(wear))
+        new = files.Checkpoint(update, cycles, counts[2], wall, final.with_wear(wear))
         files.save_checkpoint(self.folder, new, self.record)
         return new
 
@@ -120,9 +125,9 @@ class LifeRun:
         Returns
         -------
         tuple or None
-            The runs (one per cycle), those measured, the wear per cycle [m] (their mean;
-            of all but the first run if never steady), and whether it was steady (False only
-            after ``max_update_cycles``); None if a run failed or was interrupted.
+            The runs (one per cycle), those measured, the wear per cycle [m] (their mean),
+            and whether it was steady (False after ``max_update_cycles``: then the second
+            half of the runs is measured); None if a run failed or was interrupted.
         """
         settings = self.settings
         most = settings.max_update_cycles if settings.extrapolate else settings.measure_cycles
@@ -142,8 +147,12 @@ class LifeRun:
                 last = np.mean(rates[-m:], axis=0)
                 if self._steady(np.mean(rates[-2 * m : -m], axis=0), last):
                     return runs, runs[-m:], last, True
-        first = 1 if settings.extrapolate and len(runs) > 1 else 0
-        unsettled = settings.extrapolate and len(runs) == most  # not for want of cycles left
+        if not settings.extrapolate:
+            return runs, runs, np.mean(rates, axis=0), True
+        unsettled = len(runs) == most  # not for want of cycles left
+        # A motion that does not settle (a chaotic one) wears at its long-run mean: that of
+        # the update's second half, past the transient the jump in the profiles started.
+        first = len(runs) // 2 if unsettled else min(1, len(runs) - 1)
         return runs, runs[first:], np.mean(rates[first:], axis=0), not unsettled
 
     def _steady(self, before: NDArray[np.float64], last: NDArray[np.float64]) -> bool:
@@ -162,9 +171,12 @@ class LifeRun:
 
         None if the run failed or was interrupted (``status`` then says so).
         """
-        outcome = simulate(self._cycles_model(count), initial=begin)
         first = point.cycles + after
         span = f"cycles {first} to {first + count}"
+        if self.stop_requested[0]:
+            self.stop("interrupted", f"interrupted before {span}{RESUME}")
+            return None
+        outcome = simulate(self._cycles_model(count), initial=begin)
         if outcome.status == "interrupted":
             self.stop("interrupted", f"interrupted during {span}{RESUME}")
             return None
@@ -182,15 +194,26 @@ class LifeRun:
         return self.model.model_copy(update={"solver": solver})
 
     def _extrapolated_cycles(
-        self, rate: NDArray[np.float64], growth: NDArray[np.float64], left: int
+        self,
+        rate: NDArray[np.float64],
+        done: NDArray[np.float64],
+        growth: NDArray[np.float64],
+        left: int,
     ) -> int:
-        """Cycles over which ``rate`` may be extrapolated: max_change, and ``left`` at most."""
+        """Cycles over which ``rate`` may be extrapolated, ``left`` at most.
+
+        No sector may change by more than ``max_change`` in the whole update: the depth
+        ``done`` [m] its simulated cycles wore, plus the extrapolated cycles times ``rate``
+        [m/cycle].
+        """
         extra = left
         for k, joint in enumerate(self.model.clearance_joints):
-            peak = rate[k, :, : joint.clearance.sectors].max()
-            if peak > 0.0:
-                bound = self.settings.change_bound(joint.clearance.radial_clearance + growth[k])
-                extra = min(extra, math.floor(bound / peak))
+            n = joint.clearance.sectors
+            bound = self.settings.change_bound(joint.clearance.radial_clearance + growth[k])
+            wearing = rate[k, :, :n] > 0.0
+            if wearing.any():
+                room = (bound - done[k, :, :n][wearing]) / rate[k, :, :n][wearing]
+                extra = min(extra, max(0, math.floor(room.min())))
         return extra
 
     def _past_limit(
@@ -217,8 +240,8 @@ class LifeRun:
                     f"{c.radial_clearance * UM:.4g} µm, between cycles {before} and {after}: "
                     f"past max_growth {self.settings.max_growth:g}. The contact stiffness and "
                     "Hertz patch are those of the nominal radii and the worn profile enters "
-                    "only radially, so the model would no longer describe the joint (raise "
-                    "max_growth to go on regardless)",
+                    "only radially, so the model would no longer describe the joint (resume "
+                    "with a larger max_growth to go on regardless)",
                 )
                 return True
         return False

@@ -16,6 +16,7 @@ from matplotlib import colormaps
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure  # figures without pyplot: no global backend switch
 
+from .clearance_results import UM
 from .model import RevoluteJoint
 from .plots import crank_driver
 from .results import Results
@@ -33,7 +34,6 @@ CLEARANCE_FIGURES = (
     "fig10_profile",
 )  # the file names (.png) save_clearance_figures writes
 MM = 1e3  # [mm/m]
-UM = 1e6  # [µm/m]
 
 
 def _clearance_joints(results: Results) -> tuple[RevoluteJoint, ...]:
