@@ -394,9 +394,9 @@ def life(
         typer.Option(
             "--max-change",
             help="Largest depth an update adds to a sector: a length ('1 um') or a share of "
-            "the current clearance ('2%').",
+            "the current clearance ('1%').",
         ),
-    ] = "2%",
+    ] = "1%",
     extrapolate: Annotated[
         bool,
         typer.Option("--extrapolate/--no-extrapolate", help="Off: simulate every cycle."),
