@@ -26,3 +26,20 @@ def test_benchmark_runs_on_a_short_case(tmp_path):
         assert row["max_force_difference"] < 0.05
     assert [r["t_end"] for r in report["growth"]["simulated_time"]] == [0.005, 0.01]
     assert [r["clearance_joints"] for r in report["growth"]["clearance_joints"]] == [1, 2, 4]
+
+
+def test_studies_benchmark_runs_on_short_cases(tmp_path):
+    out = tmp_path / "studies.json"
+    args = ["--t-end", "0.01", "--repeats", "1", "--cycles", "6", "--out", str(out)]
+    done = subprocess.run(
+        [sys.executable, str(BENCH.with_name("bench_studies.py")), *args],
+        capture_output=True, text=True, timeout=600,
+    )  # fmt: skip
+    assert done.returncode == 0, done.stderr
+    report = json.loads(out.read_text())
+    for way in ("process", "call"):
+        times = report["sweep"][way]
+        assert times["ratio"] == times["parallel_s"] / times["serial_s"] > 0
+    life = report["life"]
+    assert (life["status"], life["cycles_reached"]) == ("success", 6)
+    assert life["simulated_cycles"] <= 6 and life["max_wear_depth_journal_m"] > 0
