@@ -155,9 +155,10 @@ def test_without_extrapolation_it_is_the_direct_simulation(tmp_path):
 
 def test_an_update_that_does_not_settle_extrapolates_the_mean_of_its_second_half(tmp_path):
     # No two turns of the four-bar wear alike to 1e-12: the update runs its 4 turns (3 to 6)
-    # and extrapolates the mean wear of turns 5 and 6 over the 2 turns left.
+    # and extrapolates the mean wear of turns 5 and 6 over the 2 turns left (6 turns of
+    # about 0.6 µm, within the 8 µm of max_change).
     res = life(FOURBAR, tmp_path, cycles=8, overrides=FAST_WEAR, steady_tolerance=1e-12,
-               max_update_cycles=4, figures=False)  # fmt: skip
+               max_update_cycles=4, max_change="4%", figures=False)  # fmt: skip
     assert res.status == "success", res.message
     table = res.table
     assert table["cycles"].tolist() == [2, 8]
@@ -188,6 +189,16 @@ def test_extrapolation_converges_as_max_change_tightens(tmp_path):
         assert res.status == "success", res.message
         assert res.summary["cycles_reached"] == 30
         errors[change] = np.abs(final_profile(res) - reference).max() / reference.max()
+        # No update that extrapolates changes a sector by more than its bound, simulated
+        # cycles included: the share of the clearance, nominal plus growth as the
+        # extrapolation starts (at most that at the update's end).
+        depths = res.profiles.pivot_table("depth_m", "update", ["surface", "sector"])
+        changes = depths.diff().max(axis=1).to_numpy()[1:]
+        growth = res.table["coupler_follower.clearance_growth_m"].to_numpy()[1:]
+        bounds = float(change[:-1]) / 100 * (C + growth)
+        extrapolating = res.table["extrapolated_cycles"].to_numpy()[1:] > 0
+        assert extrapolating.any()
+        assert (changes <= bounds * (1 + 1e-9))[extrapolating].all()
     # The wear rate falls as the profile deepens, so extrapolating the rate measured at the
     # start of an update overshoots by about the update's share: first order. Measured
     # 2.9e-2, 1.5e-2, 7.7e-3, 2.0e-3.
