@@ -31,6 +31,8 @@ import tempfile
 import time
 from pathlib import Path
 
+import pandas as pd
+
 import jointwear as jw
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -62,6 +64,7 @@ def sweep_times(t_end: float, repeats: int) -> dict:
     in_process = {path: texts.split(",") for path, texts in (v.split("=") for v in VARY)}
     jw.simulate(jw.load_model(FOURBAR, ["solver.t_end=0.001"]))  # load the kernels
     times: dict[str, list[float]] = {}
+    succeeded: list[int] = []
     with tempfile.TemporaryDirectory() as scratch:
         for repeat in range(repeats):
             for kind, workers in (("serial", 1), ("parallel", None)):
@@ -70,7 +73,7 @@ def sweep_times(t_end: float, repeats: int) -> dict:
                 wall = jointwear("sweep", *common, "--out", str(out), *extra)
                 times.setdefault(f"process_{kind}", []).append(wall)
                 start = time.perf_counter()
-                jw.sweep(
+                called = jw.sweep(
                     FOURBAR,
                     out.with_name(f"{out.name}_in_process"),
                     vary=in_process,
@@ -79,7 +82,10 @@ def sweep_times(t_end: float, repeats: int) -> dict:
                     figures=False,
                 )
                 times.setdefault(f"call_{kind}", []).append(time.perf_counter() - start)
+                for table in (pd.read_csv(out / "sweep.csv"), called.table):
+                    succeeded.append(int((table["status"] == "success").sum()))
     report: dict = {"cases": 9, "t_end_s": t_end, "cores": os.cpu_count(), "times_s": times}
+    report["fewest_cases_succeeded"] = min(succeeded)  # of any one sweep
     for way in ("process", "call"):
         serial, parallel = (statistics.median(times[f"{way}_{k}"]) for k in ("serial", "parallel"))
         report[way] = {"serial_s": serial, "parallel_s": parallel, "ratio": parallel / serial}

@@ -37,9 +37,7 @@ def test_studies_benchmark_runs_on_short_cases(tmp_path):
     )  # fmt: skip
     assert done.returncode == 0, done.stderr
     report = json.loads(out.read_text())
-    for way in ("process", "call"):
-        times = report["sweep"][way]
-        assert times["ratio"] == times["parallel_s"] / times["serial_s"] > 0
+    assert report["sweep"]["fewest_cases_succeeded"] == 9  # every sweep timed ran every case
     life = report["life"]
     assert (life["status"], life["cycles_reached"]) == ("success", 6)
     assert life["simulated_cycles"] <= 6 and life["max_wear_depth_journal_m"] > 0

@@ -314,12 +314,44 @@ def test_resume_refuses_other_settings_and_empty_folders(tmp_path):
         life(FOURBAR, tmp_path, cycles=3, overrides=FAST_WEAR, max_change="2%", resume=True)
     [line] = error.value.problems
     assert line.startswith("max_change: '2%' differs from the '1%'")
+    with pytest.raises(jw.ModelError, match=r"^max_growth: 0.5 differs from the 1.0"):
+        life(FOURBAR, tmp_path, cycles=3, overrides=FAST_WEAR, max_growth=0.5, resume=True)
     with pytest.raises(jw.ModelError) as error:
         life(FOURBAR, tmp_path, cycles=3, resume=True)
     assert error.value.problems[0].startswith("model: the model (after --set) differs")
     with pytest.raises(jw.ModelError) as error:
         life(FOURBAR, tmp_path / "empty", cycles=3, resume=True)
     assert "holds no life run to resume" in error.value.problems[0]
+
+
+def test_a_stop_asked_as_the_last_update_ends_does_not_undo_success(tmp_path):
+    def ctrl_c_at_the_end(cycles: int, total: int) -> None:
+        if cycles == total:
+            os.kill(os.getpid(), signal.SIGINT)
+
+    res = life(FOURBAR, tmp_path, cycles=4, overrides=FAST_WEAR, figures=False,
+               progress=ctrl_c_at_the_end)  # fmt: skip
+    assert (res.status, res.summary["cycles_reached"]) == ("success", 4)
+
+
+@pytest.mark.parametrize(
+    ("file", "damage"),
+    [
+        ("checkpoint/checkpoint.json", b"[]"),
+        ("checkpoint/checkpoint.json", b'{"update": 1}'),
+        ("checkpoint/state_000001.npz", b"PK\x03\x04 cut short"),
+        ("life.csv", b""),
+    ],
+    ids=["not-a-record", "keys-missing", "state-cut-short", "table-emptied"],
+)
+def test_a_damaged_run_is_a_one_line_error_on_resume(tmp_path, file, damage):
+    life(FOURBAR, tmp_path, cycles=4, overrides=FAST_WEAR, figures=False)
+    assert (tmp_path / "checkpoint" / "state_000001.npz").is_file()
+    (tmp_path / file).write_bytes(damage)
+    with pytest.raises(jw.ModelError) as error:
+        life(FOURBAR, tmp_path, cycles=4, overrides=FAST_WEAR, figures=False, resume=True)
+    [line] = error.value.problems
+    assert line.startswith(f"out: the life run in {tmp_path} is damaged and cannot be resumed")
 
 
 def test_bad_settings_and_models_are_model_errors(tmp_path):

@@ -5,6 +5,7 @@ bookkeeping (cases, names, table, skipping, failures, interruption, the Dask pat
 physics.
 """
 
+import contextlib
 import importlib
 import json
 import os
@@ -466,3 +467,34 @@ def test_local_processes_are_forked_only_from_a_single_threaded_process():
         code = "from jointwear.sweep_runners import _start_method; print(_start_method())"
         fresh = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
         assert fresh.stdout.strip() == "fork", fresh.stderr
+
+
+@pytest.mark.skipif(sys.platform != "linux", reason="/proc lists a process's children")
+def test_a_worker_that_dies_ends_the_sweep_with_errors_not_a_hang(tmp_path):
+    out = tmp_path / "killed"
+    command = [
+        sys.executable, "-m", "jointwear", "sweep", str(FOURBAR), "--out", str(out),
+        "--vary", "solver.t_end=1000,1001,1002", "--set", "solver.output_interval=0.01",
+        "--workers", "2", "--no-figures",
+    ]  # fmt: skip
+    proc = subprocess.Popen(
+        command, cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.PIPE, start_new_session=True
+    )
+    children = Path(f"/proc/{proc.pid}/task/{proc.pid}/children")
+    try:
+        deadline = time.monotonic() + 180  # generous: the kernels may compile first
+        while len(list((out / "cases").glob("*/"))) < 2 and time.monotonic() < deadline:
+            time.sleep(0.1)  # both workers have begun a case
+        time.sleep(2.0)  # and simulate it
+        workers = children.read_text().split()
+        assert len(workers) == 2, workers
+        os.kill(int(workers[0]), signal.SIGKILL)  # as the out-of-memory killer would
+        _, stderr = proc.communicate(timeout=60)  # the survivor is not waited for
+    finally:
+        with contextlib.suppress(ProcessLookupError):
+            os.killpg(proc.pid, signal.SIGKILL)  # the workers too, whatever happened
+        proc.communicate()
+    assert proc.returncode == 1, stderr.decode()
+    table = pd.read_parquet(out / "sweep.parquet")
+    assert (table["status"] == "error").all()
+    assert table["error"].str.startswith("BrokenProcessPool").all()

@@ -187,7 +187,7 @@ def life(
             point = run.update(point)
             if progress is not None and run.status == "success":
                 progress(point.cycles, cycles)
-            if stop[0] and run.status == "success":
+            if stop[0] and run.status == "success" and point.cycles < cycles:
                 run.stop("interrupted", f"interrupted at {point.cycles} cycles{RESUME}")
     with stop_requests():  # the folder is completed whatever comes now
         table, profiles = files.read_tables(folder)

@@ -32,8 +32,6 @@ FIGURE_FILES = ("life_wear.png", "life_profiles.png")  # what lifetime_plots wri
 CHECKPOINTS = "checkpoint"
 CHECKPOINT = "checkpoint.json"
 PROFILE_COLUMNS = ["update", "cycles", *WEAR_COLUMNS]
-# Settings a resumed run may change: they only stop a run, so the updates written stand
-RESUMABLE_CHANGES = ("max_growth",)
 
 
 @dataclass(frozen=True)
@@ -116,7 +114,7 @@ def load_checkpoint(folder: Path, record: dict) -> Checkpoint:
     ------
     ModelError
         If ``folder`` holds no life run, a damaged one, or one started with other settings
-        (but for RESUMABLE_CHANGES) or another model.
+        (but for a larger ``max_growth``) or another model.
     """
     path = folder / CHECKPOINTS / CHECKPOINT
     try:
@@ -125,30 +123,47 @@ def load_checkpoint(folder: Path, record: dict) -> Checkpoint:
         where = f"{CHECKPOINTS}/{CHECKPOINT}"
         problem = f"out: {folder} holds no life run to resume (no readable {where}); "
         raise ModelError([problem + "run without --resume to start one"]) from None
-    given = json.loads(json.dumps(record))  # as it reads back from JSON
-    problems = [
-        f"{key}: {given['settings'].get(key)!r} differs from the {value!r} the run in {folder} "
-        "was started with; give the same settings to resume, or start afresh without --resume"
-        for key, value in data["settings"].items()
-        if given["settings"].get(key) != value and key not in RESUMABLE_CHANGES
-    ]
+    try:
+        problems = _differences(folder, data, json.loads(json.dumps(record)))
+        counts = [data[key] for key in ("update", "cycles", "simulated_cycles", "wall_s")]
+        state_file = data["state"]
+    except (AttributeError, KeyError, TypeError) as error:
+        raise _damaged(folder, error) from None
+    if problems:
+        raise ModelError(problems)
+    try:
+        for name in (TABLE, PROFILES):
+            _cut(folder / name, counts[0] if state_file else -1)
+        state = load_run_state(folder / CHECKPOINTS / state_file) if state_file else None
+    except Exception as error:  # whatever a damaged table or state file raises
+        raise _damaged(folder, error) from None
+    return Checkpoint(*counts, state)
+
+
+def _differences(folder: Path, data: dict, given: dict) -> list[str]:
+    """What keeps the run recorded in ``data`` from being continued with ``given``."""
+    problems = []
+    for key, value in data["settings"].items():
+        new = given["settings"].get(key)
+        if new == value or (key == "max_growth" and new > value):  # a larger limit: it goes on
+            continue
+        problems.append(
+            f"{key}: {new!r} differs from the {value!r} the run in {folder} was started with; "
+            "give the same settings to resume (max_growth may be larger), or start afresh "
+            "without --resume"
+        )
     if data["model"] != given["model"]:
         problems.append(
             f"model: the model (after --set) differs from the one the run in {folder} was "
             "started with (its model.json); give the same model and --set values to resume, "
             "or start afresh without --resume"
         )
-    if problems:
-        raise ModelError(problems)
-    try:
-        for name in (TABLE, PROFILES):
-            _cut(folder / name, data["update"] if data["state"] else -1)
-        state = load_run_state(folder / CHECKPOINTS / data["state"]) if data["state"] else None
-    except (OSError, ValueError, KeyError) as error:
-        problem = f"out: the life run in {folder} cannot be resumed ({error}); "
-        raise ModelError([problem + "start afresh without --resume"]) from None
-    counts = (data[key] for key in ("update", "cycles", "simulated_cycles", "wall_s"))
-    return Checkpoint(*counts, state)
+    return problems
+
+
+def _damaged(folder: Path, error: Exception) -> ModelError:
+    problem = f"out: the life run in {folder} is damaged and cannot be resumed ({error!r}); "
+    return ModelError([problem + "start afresh without --resume"])
 
 
 def read_tables(folder: Path) -> tuple[pd.DataFrame, pd.DataFrame]:
@@ -168,6 +183,8 @@ def _cut(path: Path, update: int) -> None:
     """
     with open(path, newline="") as f:
         rows = list(csv.reader(f))
+    if not rows:
+        raise ValueError(f"{path.name} has lost its header")
     kept = [row for row in rows[1:] if len(row) == len(rows[0]) and int(row[0]) <= update]
     if len(kept) < len(rows) - 1:
         _write_rows(path, rows[0], kept)

@@ -18,6 +18,7 @@ import threading
 import time
 from collections.abc import Iterator, Sequence
 from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
+from concurrent.futures.process import BrokenProcessPool
 from contextlib import suppress
 from dataclasses import dataclass
 from pathlib import Path
@@ -144,9 +145,11 @@ def run_local(
 ) -> Iterator[tuple[CaseTask, Outcome]]:
     """Run the cases in ``workers`` local processes.
 
-    Workers ignore SIGINT except while they simulate, so that a Ctrl-C at the terminal (which
-    reaches every process of the group) stops their runs cleanly; on a stop request the
-    parent also sends them SIGINT, for a SIGTERM or a signal sent to the parent alone.
+    Workers ignore SIGINT and SIGTERM except while they simulate, so that a Ctrl-C at the
+    terminal (which reaches every process of the group) stops their runs cleanly; on a stop
+    request the parent also sends them SIGINT, for a SIGTERM or a signal sent to the parent
+    alone. If a worker dies (killed, out of memory), its case and those not yet finished are
+    recorded as errors and the other workers are killed: the pool cannot go on.
     """
     method = _start_method()
     context = multiprocessing.get_context(method)
@@ -158,25 +161,32 @@ def run_local(
     ) as pool:
         running: dict[Future, CaseTask] = {pool.submit(run_case, task): task for task in tasks}
         workers_pids: set[int] = set()
-        stopping = False
+        stopping = broken = False
         while running:
             done, _ = wait(running, timeout=POLL_S, return_when=FIRST_COMPLETED)
             for future in done:
                 task = running.pop(future)
                 if future.cancelled():
                     continue
+                broken = broken or isinstance(future.exception(), BrokenProcessPool)
                 yield task, _result(future)
+            while not pids.empty():
+                workers_pids.add(pids.get())
             if stop[0]:
                 if not stopping:
                     stopping = True
                     for future in running:
                         future.cancel()
                     running = {f: t for f, t in running.items() if not f.cancelled()}
-                while not pids.empty():
-                    workers_pids.add(pids.get())
-                for pid in workers_pids:  # again at every poll: a run that starts still stops
-                    with suppress(ProcessLookupError, PermissionError):
-                        os.kill(pid, signal.SIGINT)
+                _signal(workers_pids, signal.SIGINT)  # at every poll: a run that starts stops
+        if broken:  # the others may still run a case: the pool would wait for them
+            _signal(workers_pids, signal.SIGKILL)
+
+
+def _signal(pids: set[int], signum: int) -> None:
+    for pid in pids:
+        with suppress(ProcessLookupError, PermissionError):
+            os.kill(pid, signum)
 
 
 def _start_method() -> str:
@@ -184,9 +194,10 @@ def _start_method() -> str:
 
     A forked worker starts at once with jointwear imported (a fresh interpreter takes about
     1.5 s to import it, as long as a 5-turn case runs). Forking is safe only while this
-    process runs no other thread (one might hold a lock the child would wait on for ever),
-    and on Linux only (macOS frameworks refuse it). The pool forks all its workers on the
-    first submitted case, before it starts its own thread.
+    process runs no other Python thread (one might hold a lock the child would wait on for
+    ever; the native threads of OpenBLAS and pyarrow's allocator are fork-aware), and on
+    Linux only (macOS frameworks refuse it). The pool forks all its workers on the first
+    submitted case, before it starts its own thread.
     """
     if sys.platform == "linux" and threading.active_count() == 1:
         return "fork"
@@ -194,8 +205,9 @@ def _start_method() -> str:
 
 
 def _start_worker(pids: object) -> None:
-    signal.signal(signal.SIGINT, signal.SIG_IGN)  # simulate() installs its own while it runs
-    signal.signal(signal.SIGTERM, signal.SIG_DFL)  # not the sweep's handler, if forked
+    for signum in (signal.SIGINT, signal.SIGTERM):  # simulate() handles them while it runs
+        signal.signal(signum, signal.SIG_IGN)
+    sys.stdout, sys.stderr = sys.__stdout__, sys.__stderr__  # not the parent's progress bar
     pids.put(os.getpid())
 
 
