@@ -49,11 +49,8 @@ def _fail(error: ModelError) -> typer.Exit:
     return typer.Exit(code=2)
 
 
-def _progress(label: str, count: str, refresh_thread: bool = True) -> Progress:
-    """A transient rich progress bar on stderr: label, bar, count, elapsed time and ETA.
-
-    Without ``refresh_thread`` it is redrawn only when updated.
-    """
+def _progress(label: str, count: str) -> Progress:
+    """A transient rich progress bar on stderr: label, bar, count, elapsed time and ETA."""
     return Progress(
         TextColumn(label),
         BarColumn(),
@@ -63,7 +60,6 @@ def _progress(label: str, count: str, refresh_thread: bool = True) -> Progress:
         TimeRemainingColumn(),
         console=err,
         transient=True,
-        auto_refresh=refresh_thread,
     )
 
 
@@ -251,18 +247,18 @@ class _SweepProgress:
         else:
             outcome = report.status + (f" ({report.error})" if report.error else "")
             line = f"[{done}/{total}] {report.case}: {outcome}, {report.wall_s:.3g} s"
-        if not err.is_terminal:
-            if line is not None:
-                err.print(line, markup=False, highlight=False, soft_wrap=True)
-            return
-        if self.bar is None:
-            # no refresh thread: the sweep forks its local processes only while it has none
-            self.bar = _progress("sweep", "{task.completed}/{task.total} cases", False)
+        runs_started = report is None or not report.skipped
+        if self.bar is None and runs_started and err.is_terminal:
+            # only once the local processes have started: they may be forked, and the bar
+            # runs a thread
+            self.bar = _progress("sweep", "{task.completed}/{task.total} cases")
             self.bar.start()
             self.task = self.bar.add_task("sweep", total=total)
+        console = err if self.bar is None else self.bar.console
         if line is not None:
-            self.bar.console.print(line, markup=False, highlight=False, soft_wrap=True)
-        self.bar.update(self.task, completed=done, refresh=True)
+            console.print(line, markup=False, highlight=False, soft_wrap=True)
+        if self.bar is not None:
+            self.bar.update(self.task, completed=done)
 
     def close(self) -> None:
         if self.bar is not None:

@@ -137,10 +137,11 @@ def sweep(
         outcomes[name] = read_record(folder / CASES_FOLDER / name)
         _report(progress, name, outcomes[name], len(outcomes), len(tasks), skipped=True)
     todo = [task for task in tasks if task.case not in outcomes]
-    if progress is not None:
-        progress(None, len(outcomes), len(tasks))
     with stop_requests() as stop:
-        for task, outcome in _runner(todo, scheduler, workers, stop):
+        runs = _runner(todo, scheduler, workers, stop)  # local processes start here
+        if progress is not None:
+            progress(None, len(outcomes), len(tasks))
+        for task, outcome in runs:
             outcomes[task.case] = outcome
             _report(progress, task.case, outcome, len(outcomes), len(tasks), skipped=False)
         interrupted = stop[0]

@@ -150,16 +150,27 @@ def run_local(
     request the parent also sends them SIGINT, for a SIGTERM or a signal sent to the parent
     alone. If a worker dies (killed, out of memory), its case and those not yet finished are
     recorded as errors and the other workers are killed: the pool cannot go on.
+
+    The workers start at this call (before the caller starts any thread, such as a progress
+    bar's, for they may be forked); the cases' outcomes come as the returned iterator is read.
     """
     method = _start_method()
     context = multiprocessing.get_context(method)
     if method == "forkserver":
         context.set_forkserver_preload(["jointwear.run"])  # imported once, not per worker
     pids = context.SimpleQueue()
-    with ProcessPoolExecutor(
+    pool = ProcessPoolExecutor(
         max_workers=workers, mp_context=context, initializer=_start_worker, initargs=(pids,)
-    ) as pool:
-        running: dict[Future, CaseTask] = {pool.submit(run_case, task): task for task in tasks}
+    )
+    running: dict[Future, CaseTask] = {pool.submit(run_case, task): task for task in tasks}
+    return _collect(pool, running, pids, stop)
+
+
+def _collect(
+    pool: ProcessPoolExecutor, running: dict[Future, CaseTask], pids: object, stop: Stop
+) -> Iterator[tuple[CaseTask, Outcome]]:
+    """The outcomes of ``run_local``'s cases as they finish; the pool is shut down at the end."""
+    with pool:
         workers_pids: set[int] = set()
         stopping = broken = False
         while running:
