@@ -16,6 +16,7 @@ from matplotlib.figure import Figure
 
 LOG_AXIS_RATIO = 100.0  # positive values spanning more than this get a logarithmic axis
 LONG_LENGTH = (1e-3, "m", 1.0)  # lengths in a column reaching this [m] are drawn in metres
+MAX_TICKS = 12  # more numeric values than this: ticks of the axis, not one per value
 MAX_LEGEND = 12  # more lines than this: no legend (the table tells them apart)
 DISPLAY_UNITS = (  # column suffix (SI), axis unit, factor from SI; the first match counts
     ("_m3", "mm³", 1e9),
@@ -68,7 +69,8 @@ def plot_sweep(
         if np.all(values > 0) and values.max() > LOG_AXIS_RATIO * values.min():
             ax.set_xscale("log")
             ax.minorticks_off()
-        ax.set_xticks(categories, [texts[x_path].get(c, str(c)) for c in categories])
+        if len(categories) <= MAX_TICKS:  # else the axis's own ticks, which do not overlap
+            ax.set_xticks(categories, [texts[x_path].get(c, str(c)) for c in categories])
     else:
         ax.set_xticks(range(len(categories)), [texts[x_path].get(c, str(c)) for c in categories])
     if others and lines <= MAX_LEGEND:
