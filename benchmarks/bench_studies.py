@@ -12,11 +12,16 @@ Two targets, measured with the numba cache warm:
 - **life**: the ``jointwear life`` process wearing the paper's four-bar over 1e6 crank cycles
   with the default settings (target: under 60 s); wall time, updates, simulated cycles and
   the reported status.
+- **convergence** (on request): life runs over 1e6 turns at several ``--max-change``, at the
+  paper's wear coefficient and a thousand times smaller, and the direct run (``--direct``):
+  the turns at which the clearance has grown by 25, 50 and 75 %.
 
 Usage (from the repository root, after ``make install``)::
 
     .venv/bin/python benchmarks/bench_studies.py               # both, a few minutes
     .venv/bin/python benchmarks/bench_studies.py --no-life --repeats 1 --t-end 0.02  # smoke
+    .venv/bin/python benchmarks/bench_studies.py --no-sweep --no-life \
+        --convergence 8%,4%,2%,1%,0.5% --direct                              # 6 minutes
 """
 
 from __future__ import annotations
@@ -38,6 +43,7 @@ import jointwear as jw
 ROOT = Path(__file__).resolve().parents[1]
 FOURBAR = ROOT / "examples" / "flores2009_fourbar.toml"
 CLEARANCE = "joints.coupler_follower.clearance"
+WEAR_COEFFICIENTS = ("8e-14 1/Pa", "8e-17 1/Pa")  # the paper's, and a thousand times smaller
 VARY = [
     f"{CLEARANCE}.friction_coefficient=0.05,0.1,0.2",
     f"{CLEARANCE}.bearing_radius=10.0 mm,10.1 mm,10.2 mm",
@@ -118,6 +124,61 @@ def life_run(cycles: int) -> dict:
     }
 
 
+def convergence(changes: list[str], direct: bool) -> list[dict]:
+    """Life runs of the four-bar over 1e6 turns per ``--max-change`` (and, if ``direct``, with
+    no extrapolation), at the paper's wear coefficient and at one a thousand times smaller:
+    when the clearance has grown by 25, 50 and 75 % of c, and where each run ended."""
+    from jointwear.lifetime import life
+    from jointwear.lifetime_records import cycles_at
+
+    rows = []
+    settings = [(k, change, True) for k in WEAR_COEFFICIENTS for change in changes]
+    settings += [(WEAR_COEFFICIENTS[0], "direct", False)] if direct else []
+    with tempfile.TemporaryDirectory() as scratch:
+        for k, change, extrapolate in settings:
+            folder = Path(scratch) / f"{len(rows)}"
+            start = time.perf_counter()
+            res = life(
+                FOURBAR, folder, cycles=1_000_000, figures=False, extrapolate=extrapolate,
+                max_change=change if extrapolate else "1%",
+                overrides=[f"{CLEARANCE}.wear_coefficient={k}"],
+            )  # fmt: skip
+            growth = res.table["coupler_follower.clearance_growth_m"] / 200e-6
+            joint = res.summary["clearance_joints"]["coupler_follower"]
+            rows.append(
+                {
+                    "wear_coefficient": k,
+                    "max_change": change,
+                    "status": res.status,
+                    "cycles_reached": res.summary["cycles_reached"],
+                    "updates": res.summary["updates"],
+                    "simulated_cycles": res.summary["simulated_cycles"],
+                    "growth_at": {
+                        share: cycles_at(res.table["cycles"], growth, share / 100)
+                        for share in (25, 50, 75)
+                    },
+                    "clearance_growth_m": joint["clearance_growth_m"],
+                    "max_wear_depth_journal_m": joint["max_wear_depth_journal_m"],
+                    "wall_s": time.perf_counter() - start,
+                }
+            )
+            print(_convergence_line(rows[-1]), flush=True)
+    return rows
+
+
+def _convergence_line(row: dict) -> str:
+    at = ", ".join(
+        f"{share}%: {'-' if c is None else f'{c:,.0f}'}" for share, c in row["growth_at"].items()
+    )
+    return (
+        f"k {row['wear_coefficient']}, max-change {row['max_change']}: {row['status']} at "
+        f"{row['cycles_reached']:,} turns, {row['updates']} updates "
+        f"({row['simulated_cycles']} simulated); growth {at}; final growth "
+        f"{row['clearance_growth_m'] * 1e6:.1f} um, journal "
+        f"{row['max_wear_depth_journal_m'] * 1e6:.1f} um; {row['wall_s']:.1f} s"
+    )
+
+
 def main(argv: list[str] | None = None) -> dict:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--t-end", type=float, default=0.2, help="per sweep case [s]; 5 turns")
@@ -125,6 +186,13 @@ def main(argv: list[str] | None = None) -> dict:
     parser.add_argument("--cycles", type=int, default=1_000_000, help="of the life run")
     parser.add_argument("--no-sweep", dest="sweep", action="store_false")
     parser.add_argument("--no-life", dest="life", action="store_false")
+    parser.add_argument(
+        "--convergence",
+        default="",
+        help="comma-separated --max-change values of a convergence study (e.g. 8%%,4%%,2%%,1%%,"
+        "0.5%%); minutes",
+    )
+    parser.add_argument("--direct", action="store_true", help="with it, the direct run (3 min)")
     parser.add_argument("--out", type=Path, default=ROOT / "benchmarks" / "studies.json")
     args = parser.parse_args(argv)
     jointwear("check", str(FOURBAR))  # a warm interpreter cache before anything is timed
@@ -145,6 +213,9 @@ def main(argv: list[str] | None = None) -> dict:
             f" cycles, {life['updates']} updates ({life['simulated_cycles']} simulated), "
             f"{life['process_wall_s']:.1f} s wall"
         )
+    if args.convergence or args.direct:
+        changes = [c for c in args.convergence.split(",") if c]
+        report["convergence"] = convergence(changes, args.direct)
     args.out.write_text(json.dumps(report, indent=2))
     return report
 
