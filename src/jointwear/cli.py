@@ -64,21 +64,25 @@ def _progress(label: str, count: str) -> Progress:
 
 
 class _ProgressBar:
-    """A progress bar on a terminal, shown once a run has lasted PROGRESS_AFTER_S."""
+    """A progress bar on a terminal, shown once the work has lasted ``after_s`` [s].
 
-    def __init__(self) -> None:
+    Called as ``bar(done, total)``; ``count`` formats them (rich task fields).
+    """
+
+    def __init__(self, label: str, count: str, after_s: float = 0.0) -> None:
+        self.label, self.count, self.after_s = label, count, after_s
         self.start = time.perf_counter()
         self.bar: Progress | None = None
         self.task = 0
 
-    def __call__(self, t: float, t_end: float) -> None:
+    def __call__(self, done: float, total: float) -> None:
         if self.bar is None:
-            if not err.is_terminal or time.perf_counter() - self.start < PROGRESS_AFTER_S:
-                return  # no bar in logs and pipes, nor for short runs
-            self.bar = _progress("simulating", "t = {task.completed:.4g} / {task.total:.4g} s")
+            if not err.is_terminal or time.perf_counter() - self.start < self.after_s:
+                return  # no bar in logs and pipes, nor for short work
+            self.bar = _progress(self.label, self.count)
             self.bar.start()
-            self.task = self.bar.add_task("run", total=t_end)
-        self.bar.update(self.task, completed=t)
+            self.task = self.bar.add_task(self.label, total=total)
+        self.bar.update(self.task, completed=done)
 
     def close(self) -> None:
         if self.bar is not None:
@@ -104,7 +108,9 @@ def run(
     settings = list(overrides or [])
     if t_end is not None:
         settings.append(f"solver.t_end={t_end!r}")
-    bar = _ProgressBar()
+    bar = _ProgressBar(
+        "simulating", "t = {task.completed:.4g} / {task.total:.4g} s", PROGRESS_AFTER_S
+    )
     try:
         results = run_model(
             model, out_dir, overrides=settings, figures=figures, ideal=ideal, progress=bar
@@ -336,27 +342,6 @@ def sweep(
         raise typer.Exit(code=1)
 
 
-class _LifeProgress:
-    """Cycles done of a life run: a progress bar on a terminal."""
-
-    def __init__(self) -> None:
-        self.bar: Progress | None = None
-        self.task = 0
-
-    def __call__(self, cycles: int, total: int) -> None:
-        if not err.is_terminal:
-            return
-        if self.bar is None:
-            self.bar = _progress("wearing", "{task.completed:,} / {task.total:,} cycles")
-            self.bar.start()
-            self.task = self.bar.add_task("life", total=total)
-        self.bar.update(self.task, completed=cycles)
-
-    def close(self) -> None:
-        if self.bar is not None:
-            self.bar.stop()
-
-
 @app.command()
 def life(
     model: ModelPath,
@@ -420,7 +405,7 @@ def life(
     profile by at most --max-change), updates the joint geometry and repeats. OUT gets
     life.csv (one row per update), profiles.csv, summary.json and figures/.
     """
-    bar = _LifeProgress()
+    bar = _ProgressBar("wearing", "{task.completed:,} / {task.total:,} cycles")
     try:
         results = run_life(
             model,
@@ -463,10 +448,10 @@ def life(
 def _life_line(name: str, joint: dict) -> str:
     """One line of a clearance joint's wear after a life run."""
     at = joint["cycles_to_clearance_growth_50pct"]
-    half = f"{at:,.0f} cycles" if at is not None else "not reached"
+    half = f"at {at:,.0f} cycles" if at is not None else "not reached"
     return (
         f"{name}: max wear depth journal {joint['max_wear_depth_journal_m'] * 1e6:.4g} µm, "
         f"bearing {joint['max_wear_depth_bearing_m'] * 1e6:.4g} µm; clearance grown by "
         f"{joint['clearance_growth_m'] * 1e6:.4g} µm ({joint['clearance_growth_fraction']:.0%});"
-        f" 50% growth at {half}"
+        f" 50% growth {half}"
     )
