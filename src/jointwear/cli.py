@@ -33,6 +33,7 @@ from .system import build_system
 app = typer.Typer(add_completion=False, no_args_is_help=True, help=__doc__.splitlines()[0])
 err = Console(stderr=True)
 out = Console()
+PLAIN = {"soft_wrap": True, "markup": False, "highlight": False}  # text as written
 PROGRESS_AFTER_S = 1.0  # show a progress bar only for runs longer than this
 HERTZ_REFERENCE_FORCES = (100.0, 1000.0)  # loads at which `check` shows the Hertz patch [N]
 
@@ -45,7 +46,7 @@ Overrides = Annotated[
 
 def _fail(error: ModelError) -> typer.Exit:
     for line in error.problems:
-        err.print(line, markup=False, highlight=False, soft_wrap=True)
+        err.print(line, **PLAIN)
     return typer.Exit(code=2)
 
 
@@ -262,7 +263,7 @@ class _SweepProgress:
             self.task = self.bar.add_task("sweep", total=total)
         console = err if self.bar is None else self.bar.console
         if line is not None:
-            console.print(line, markup=False, highlight=False, soft_wrap=True)
+            console.print(line, **PLAIN)
         if self.bar is not None:
             self.bar.update(self.task, completed=done)
 
@@ -332,10 +333,9 @@ def sweep(
     tally = ", ".join(f"{counts[status]} {status}" for status in order)
     skipped = f" ({len(results.skipped)} finished before)" if results.skipped else ""
     out.print(f"{len(table)} cases{skipped}: {tally}", soft_wrap=True, highlight=False)
-    plain = {"soft_wrap": True, "markup": False, "highlight": False}
     for _, row in table[table["status"] != "success"].iterrows():
-        out.print(f"{row['case']}: {row['status']}: {row['error']}", **plain)
-    out.print(f"table in {out_dir / 'sweep.csv'} and sweep.parquet", **plain)
+        out.print(f"{row['case']}: {row['status']}: {row['error']}", **PLAIN)
+    out.print(f"table in {out_dir / 'sweep.csv'} and sweep.parquet", **PLAIN)
     if results.interrupted:
         err.print("interrupted: the table holds the cases finished so far", soft_wrap=True)
     if results.failed:
@@ -429,18 +429,17 @@ def life(
     finally:
         bar.close()
     summary = results.summary
-    plain = {"soft_wrap": True, "markup": False, "highlight": False}
     unsteady = summary["unsteady_updates"]
     out.print(
         f"{summary['status']}: {summary['message']}; {summary['cycles_reached']:,} cycles in "
         f"{summary['updates']} updates ({summary['simulated_cycles']:,} simulated"
         f"{f', {unsteady} unsteady' if unsteady else ''}), {summary['wall_s']:.3g} s wall",
-        **plain,
+        **PLAIN,
     )
     for name, joint in summary["clearance_joints"].items():
         if "clearance_growth_m" in joint:
-            out.print(_life_line(name, joint), **plain)
-    out.print(f"results in {out_dir}", **plain)
+            out.print(_life_line(name, joint), **PLAIN)
+    out.print(f"results in {out_dir}", **PLAIN)
     if summary["status"] != "success":
         raise typer.Exit(code=1)
 
