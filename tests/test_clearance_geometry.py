@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from jointwear.kernels.clearance import (
+from jointwear.kernels.elements.journal_geometry import (
     apply_contact,
     contact_velocities,
     eccentricity,

@@ -9,8 +9,13 @@ import numba
 import numpy as np
 import pytest
 
-from jointwear.kernels import abm, stepsize
-from jointwear.kernels import dopri5 as dp
+from jointwear.kernels.integrate import abm, stepsize
+from jointwear.kernels.integrate import rk as dp
+
+TABLEAU = dp.DOPRI5
+A, B, C, E = TABLEAU.a, TABLEAU.b, TABLEAU.c, TABLEAU.e
+# The embedded 4th-order weights as published (Dormand and Prince 1980, Table 2).
+BHAT = np.array([5179 / 57600, 0, 7571 / 16695, 393 / 640, -92097 / 339200, 187 / 2100, 1 / 40])
 
 METHODS = ["dopri5", "abm"]
 
@@ -108,36 +113,36 @@ def _new_result(t_out, n):
 def drive_dopri5(f, t0, y0, stops, rtol, atol, h0, h_max, t_out):
     n = len(y0)
     res = _new_result(t_out, n)
-    st = dp.make_dopri5_state(n)
+    st = dp.make_rk_state(n)
     f0 = np.empty(n)
     ybuf = np.empty(n)
 
     def interp(t, out):
-        dp.dopri5_interpolate(st, t, out)
+        dp.rk_interpolate(st, t, out)
 
     def dinterp(t, out):
-        dp.dopri5_interpolate_derivative(st, t, out)
+        dp.rk_interpolate_derivative(st, t, out)
 
     j = 0
     for i, t_stop in enumerate(stops):
         t = t0 if i == 0 else st.scal[dp.S_T]
         y = np.array(y0, dtype=float) if i == 0 else st.y.copy()
         f(t, y, f0)
-        dp.dopri5_start(st, t, y, f0, h0)
+        dp.rk_start(st, t, y, f0, h0)
         j = _collect(res, j, t, interp, dinterp)
         while st.scal[dp.S_T] < t_stop:
-            dp.dopri5_begin(st, h_max, 0.0, t_stop)
+            dp.rk_begin(st, h_max, 0.0, t_stop)
             for s in range(1, 7):
-                ts = dp.dopri5_stage(st, s)
+                ts = dp.rk_stage(st, s)
                 f(ts, st.ystage, st.k[s])
-            err = dp.dopri5_error(st, rtol, atol)
+            err = dp.rk_error(st, rtol, atol)
             if err <= 1.0:
-                dp.dopri5_accept(st, err)
+                dp.rk_accept(st, err)
                 j = _collect(res, j, st.scal[dp.S_T], interp, dinterp)
                 interp(st.scal[dp.S_T], ybuf)
                 res.right_end_exact &= bool(np.all(ybuf == st.y))
             else:
-                dp.dopri5_reject(st, err)
+                dp.rk_reject(st, err)
         res.stop_times.append(st.scal[dp.S_T])
     res.t, res.y = st.scal[dp.S_T], st.y.copy()
     res.n_accept, res.n_reject = int(st.count[dp.C_NACCEPT]), int(st.count[dp.C_NREJECT])
@@ -217,67 +222,79 @@ def tree_residuals(b, a, c, theta=1.0):
 
 
 def test_tableau_structure():
-    np.testing.assert_allclose(dp.A.sum(axis=1), dp.C, atol=1e-15)
-    assert np.all(np.triu(dp.A) == 0.0)  # explicit
-    assert np.array_equal(dp.A[6], dp.B) and dp.C[6] == 1.0  # FSAL
-    assert math.isclose(dp.B.sum(), 1.0, abs_tol=1e-15)
-    assert math.isclose(dp.BHAT.sum(), 1.0, abs_tol=1e-15)
-    np.testing.assert_allclose(dp.E, dp.B - dp.BHAT)
-    assert abs(dp.E.sum()) < 1e-15
+    np.testing.assert_allclose(A.sum(axis=1), C, atol=1e-15)
+    assert np.all(np.triu(A) == 0.0)  # explicit
+    assert np.array_equal(A[6], B) and C[6] == 1.0  # FSAL
+    assert math.isclose(B.sum(), 1.0, abs_tol=1e-15)
+    assert math.isclose(BHAT.sum(), 1.0, abs_tol=1e-15)
+    np.testing.assert_allclose(E, B - BHAT)
+    assert abs(E.sum()) < 1e-15
 
 
 @pytest.mark.parametrize("q", [1, 2, 3, 4, 5])
 def test_quadrature_order_conditions(q):
-    assert math.isclose(dp.B @ dp.C ** (q - 1), 1.0 / q, abs_tol=1e-14)
+    assert math.isclose(B @ C ** (q - 1), 1.0 / q, abs_tol=1e-14)
     if q <= 4:
-        assert math.isclose(dp.BHAT @ dp.C ** (q - 1), 1.0 / q, abs_tol=1e-14)
+        assert math.isclose(BHAT @ C ** (q - 1), 1.0 / q, abs_tol=1e-14)
     else:  # the embedded solution is only of order 4
-        assert abs(dp.BHAT @ dp.C**4 - 0.2) > 1e-6
+        assert abs(BHAT @ C**4 - 0.2) > 1e-6
 
 
 def test_tree_order_conditions_up_to_4():
-    np.testing.assert_allclose(tree_residuals(dp.B, dp.A, dp.C), 0.0, atol=1e-14)
-    np.testing.assert_allclose(tree_residuals(dp.BHAT, dp.A, dp.C), 0.0, atol=1e-14)
+    np.testing.assert_allclose(tree_residuals(B, A, C), 0.0, atol=1e-14)
+    np.testing.assert_allclose(tree_residuals(BHAT, A, C), 0.0, atol=1e-14)
 
 
 @pytest.mark.parametrize("theta", [0.1, 0.5, 0.77, 1.0])
 def test_dense_output_weights_satisfy_order_4(theta):
-    # y0 = 0, h = 1, k = identity: the continuous extension then returns its weights b(theta).
-    k = np.eye(7)
-    rcont = np.empty((5, 7))
-    dp.dense_prepare(np.zeros(7), dp.B.copy(), k, 1.0, rcont)
-    b = np.empty(7)
-    dp.dense_eval(rcont, theta, b)
-    np.testing.assert_allclose(tree_residuals(b, dp.A, dp.C, theta), 0.0, atol=1e-13)
+    # The continuous extension's weights b_i(theta) = sum_p P[i, p] theta^(p+1).
+    b = TABLEAU.p @ theta ** np.arange(1, TABLEAU.p.shape[1] + 1)
+    np.testing.assert_allclose(tree_residuals(b, A, C, theta), 0.0, atol=1e-13)
 
 
 # --------------------------------------------------------------------------- dopri5 single steps
 
 
+class Step:
+    """Dense output of one accepted step of length h from t0, at the fraction theta."""
+
+    def __init__(self, st, t0, h):
+        self.st, self.t0, self.h = st, t0, h
+
+    def value(self, theta, out):
+        dp.rk_interpolate(self.st, self.t0 + theta * self.h, out)
+
+    def slope(self, theta, out):
+        dp.rk_interpolate_derivative(self.st, self.t0 + theta * self.h, out)
+
+
 def one_step(f, t0, y0, h):
     n = len(y0)
-    k, ys, err, rcont = np.empty((7, n)), np.empty(n), np.empty(n), np.empty((5, n))
-    f(t0, y0, k[0])
+    st, f0 = dp.make_rk_state(n), np.empty(n)
+    f(t0, y0, f0)
+    dp.rk_start(st, t0, y0, f0, h)
+    dp.rk_begin(st, h, 0.0, t0 + 10.0 * h)
     for s in range(1, 7):
-        dp.stage_input(y0, k, h, s, ys)
-        f(t0 + dp.C[s] * h, ys, k[s])
-    dp.error_estimate(k, h, err)
-    dp.dense_prepare(y0, ys, k, h, rcont)
-    return ys, err, rcont
+        ts = dp.rk_stage(st, s)
+        f(ts, st.ystage, st.k[s])
+    err = dp.rk_error(st, 1.0, 1.0)
+    err_vector = st.err.copy()
+    dp.rk_accept(st, err)
+    return st.y.copy(), err_vector, Step(st, t0, h)
 
 
 def test_dense_output_endpoints_exact():
     y0 = np.array([1.3])
     y1, _, rcont = one_step(exp_sin, 0.4, y0, 0.3)
     out = np.empty(1)
-    dp.dense_eval(rcont, 0.0, out)
+    rcont.value(0.0, out)
     assert out[0] == y0[0]
-    dp.dense_eval(rcont, 1.0, out)
+    rcont.value(1.0, out)
     assert out[0] == y1[0]
     # the derivative matches f at both ends (Hermite conditions)
     f = np.empty(1)
     for theta, t, y in ((0.0, 0.4, y0), (1.0, 0.7, y1)):
-        dp.dense_eval_derivative(rcont, theta, 0.3, out)
+        rcont.slope(theta, out)
         exp_sin(t, y, f)
         assert math.isclose(out[0], f[0], rel_tol=1e-13)
 
@@ -296,9 +313,9 @@ def test_dopri5_local_orders():
         den, der = 0.0, 0.0
         for th in thetas:
             t = t0 + th * h
-            dp.dense_eval(rcont, th, out)
+            rcont.value(th, out)
             den = max(den, abs(out[0] - math.exp(math.sin(t))))
-            dp.dense_eval_derivative(rcont, th, h, out)
+            rcont.slope(th, out)
             der = max(der, abs(out[0] - math.cos(t) * math.exp(math.sin(t))))
         e_den.append(den)
         e_der.append(der)
@@ -486,13 +503,13 @@ def test_abm_interpolation_unchanged_by_rejected_attempts():
 
 
 def test_nonfinite_error_is_rejected():
-    st = dp.make_dopri5_state(1)
-    dp.dopri5_start(st, 0.0, np.ones(1), np.ones(1), 0.1)
-    dp.dopri5_begin(st, 1.0, 0.0, 1.0)
+    st = dp.make_rk_state(1)
+    dp.rk_start(st, 0.0, np.ones(1), np.ones(1), 0.1)
+    dp.rk_begin(st, 1.0, 0.0, 1.0)
     st.k[1:] = np.nan
-    err = dp.dopri5_error(st, 1e-6, 1e-6)
+    err = dp.rk_error(st, 1e-6, 1e-6)
     assert not err <= 1.0
-    assert math.isclose(dp.dopri5_reject(st, err), 0.1 * stepsize.FAC_MIN)
+    assert math.isclose(dp.rk_reject(st, err), 0.1 * stepsize.FAC_MIN)
 
 
 @pytest.mark.parametrize("module", [stepsize, dp, abm])

@@ -9,8 +9,16 @@ from hypothesis import strategies as st
 from scipy.integrate import quad, solve_ivp
 from scipy.optimize import brentq
 
-from jointwear.kernels.codes import FrictionLaw, NormalLaw, WearLaw
-from jointwear.kernels.contact import (
+from jointwear.kernels.laws.friction import (
+    FrictionLaw,
+    ambrosio,
+    coulomb,
+    is_sliding,
+    stick_slip,
+    tangential_force,
+)
+from jointwear.kernels.laws.normal import (
+    NormalLaw,
     effective_modulus,
     effective_radius,
     flores2011,
@@ -20,14 +28,8 @@ from jointwear.kernels.contact import (
     lankarani_nikravesh,
     normal_force,
 )
-from jointwear.kernels.friction import (
-    ambrosio,
-    coulomb,
-    is_sliding,
-    stick_slip,
-    tangential_force,
-)
-from jointwear.kernels.wear import (
+from jointwear.kernels.laws.wear import (
+    WearLaw,
     accumulate_wear,
     archard,
     depth_at,

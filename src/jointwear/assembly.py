@@ -49,10 +49,10 @@ def row_labels(model: Model) -> list[str]:
 
 
 def _evaluate(system: System, q: NDArray, qd: NDArray) -> tuple[NDArray, NDArray, NDArray]:
-    m = constraint_count(system)
+    m = constraint_count(system.mechanism)
     phi, gamma, phi_t = np.zeros(m), np.zeros(m), np.zeros(m)
     cq = np.zeros((m, q.shape[0]))
-    evaluate_constraints(0.0, q, qd, system, phi, cq, gamma, phi_t)
+    evaluate_constraints(0.0, q, qd, system.mechanism, phi, cq, gamma, phi_t)
     return phi, cq, phi_t
 
 
@@ -111,7 +111,7 @@ def assemble(model: Model, system: System, tolerance: float | None = None) -> As
     if rank < cq.shape[0]:
         raise ModelError([_redundancy_message(cq, labels)])
     qd -= np.linalg.lstsq(cq, cq @ qd + phi_t, rcond=None)[0]
-    joint_rows = 2 * system.joint_kind.shape[0]
+    joint_rows = 2 * system.mechanism.joint_kind.shape[0]
     return Assembly(
         y0=np.concatenate([q, qd]),
         iterations=iterations,

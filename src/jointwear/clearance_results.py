@@ -17,7 +17,7 @@ import numpy as np
 import pandas as pd
 from numpy.typing import NDArray
 
-from .kernels import contact_steps as cs
+from .kernels.elements import journal as cs
 from .model import Model
 
 SURFACES = ("bearing", "journal")
@@ -69,10 +69,10 @@ def impact_rows(
         (
             float(time[i]),
             names[joint[i]],
-            float(info[i, cs.I_SPEED]),
-            math.degrees(info[i, cs.I_THETA_B]),
-            math.degrees(info[i, cs.I_THETA_J]),
-            float(info[i, cs.I_DELTA]),
+            float(info[i, cs.IMPACT_SPEED]),
+            math.degrees(info[i, cs.IMPACT_THETA_B]),
+            math.degrees(info[i, cs.IMPACT_THETA_J]),
+            float(info[i, cs.IMPACT_DELTA]),
         )
         for i in range(count)
     ]

@@ -6,24 +6,29 @@ the kernels' codes; each law's parameters are separate keys, and a key that the 
 does not use is refused, so a model never carries a setting that silently does nothing.
 """
 
-from typing import Annotated
+from typing import Annotated, NamedTuple
 
 from annotated_types import Ge, Gt, Le
 from pydantic import BeforeValidator, model_validator
 
-from jointwear.kernels.codes import FrictionLaw, NormalLaw, WearLaw
-from jointwear.kernels.contact import (
+from jointwear.kernels.laws.friction import FRICTION_LAWS as FRICTION_FAMILY
+from jointwear.kernels.laws.normal import NORMAL_LAWS as NORMAL_FAMILY
+from jointwear.kernels.laws.normal import (
     effective_modulus,
     effective_radius,
     internal_cylinder_stiffness,
 )
-from jointwear.kernels.wear import hertz_line_contact
+from jointwear.kernels.laws.registry import Law, by_name
+from jointwear.kernels.laws.wear import WEAR_LAWS as WEAR_FAMILY
+from jointwear.kernels.laws.wear import hertz_line_contact
 from jointwear.model_tables import Number, Table, one_of
 from jointwear.units import Length, Pressure, Speed, WearCoefficient
 
-NORMAL_LAWS = {law.name.lower(): law for law in NormalLaw}
-FRICTION_LAWS = {law.name.lower(): law for law in FrictionLaw}
-WEAR_LAWS = {law.name.lower(): law for law in WearLaw}
+NORMAL_LAWS = by_name(NORMAL_FAMILY)
+FRICTION_LAWS = by_name(FRICTION_FAMILY)
+WEAR_LAWS = by_name(WEAR_FAMILY)
+FAMILIES = {"normal": ("normal_law", NORMAL_LAWS), "friction": ("friction_law", FRICTION_LAWS),
+            "wear": ("wear_law", WEAR_LAWS)}  # fmt: skip
 WEAR_DISTRIBUTIONS = {"hertz": False, "peak": True}  # value: paper-style single sector
 
 PositiveLength = Annotated[Length, Gt(0)]
@@ -31,25 +36,35 @@ Modulus = Annotated[Pressure, Gt(0)]
 Poisson = Annotated[Number, Ge(0), Le(0.5)]
 PositiveSpeed = Annotated[Speed, Gt(0)]
 
-_DAMPED = ("lankarani_nikravesh", "hunt_crossley", "flores2011")
+
+def _users(laws: dict[str, Law]) -> dict[str, tuple[str, ...]]:
+    """{key: the laws of a family that read it}, from the family's registry."""
+    users: dict[str, tuple[str, ...]] = {}
+    for law in laws.values():
+        for key in law.keys:
+            users[key.name] = (*users.get(key.name, ()), law.name)
+    return users
+
+
 # Keys that only some laws use: {law key: {key: the laws that use it}}.
-_LAW_KEYS = {
-    "normal_law": {"restitution_coefficient": _DAMPED},
-    "friction_law": {
-        "no_friction_speed": ("ambrosio",),
-        "full_friction_speed": ("ambrosio",),
-        "regularisation_speed": ("coulomb",),
-        "static_friction_coefficient": ("stick_slip",),
-        "stiction_speed": ("stick_slip",),
-        "transition_speed": ("stick_slip",),
-    },
-    "wear_law": {
-        "wear_coefficient": ("archard",),
-        "dimensionless_wear_coefficient": ("archard",),
-        "hardness": ("archard",),
-        "shear_strength": ("reye",),
-    },
-}
+_LAW_KEYS = {law_key: _users(laws) for law_key, laws in FAMILIES.values()}
+
+
+class PackedLaw(NamedTuple):
+    """A chosen law's code and its parameters as the kernels read them (SI)."""
+
+    code: int
+    parameters: tuple[float, ...]
+
+
+def law_parameters(clearance: "Clearance") -> dict[str, PackedLaw]:
+    """Per family ("normal", "friction", "wear"): the chosen law's code and packed parameters."""
+    packed = {}
+    for family, (law_key, laws) in FAMILIES.items():
+        law = laws[getattr(clearance, law_key)]
+        values = {key.name: getattr(clearance, key.name) for key in law.keys}
+        packed[family] = PackedLaw(law.code, law.pack(values))
+    return packed
 HERTZ_EXPONENT = 1.5  # the exponent the internal-cylinder stiffness formula is for
 
 

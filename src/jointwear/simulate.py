@@ -26,14 +26,16 @@ from .clearance_results import (
 )
 from .interrupts import stop_requests
 from .kernels import loop
-from .kernels.abm import make_abm_state
-from .kernels.codes import N_COUNTERS, Counter, Status
-from .kernels.contact_steps import N_IMPACT_INFO, N_TOTALS
-from .kernels.dopri5 import make_dopri5_state
+from .kernels.codes import N_COUNTERS, Counter, Method, Status
+from .kernels.dynamics import Problem, make_dynamics_scratch
+from .kernels.elements import ElementLog, Elements, ElementScratch, ElementState
+from .kernels.elements.journal import DEGREES_OF_FREEDOM, N_IMPACT_INFO, make_journals
+from .kernels.integrate.abm import make_abm_state
+from .kernels.integrate.rk import DOPRI5, S_T, make_rk_state
 from .model import Model
 from .results import Results, status_message
 from .run_state import RunState
-from .system import System, build_system, column_names, make_work
+from .system import System, build_system, column_names, constraint_count
 
 CHUNK_WALL_S = 0.2  # target wall time of one compiled chunk [s]
 MIN_CHUNK_STEPS = 100  # the first chunk: this many maximum steps, and at least this many steps
@@ -56,31 +58,51 @@ def _snapshot_times(t0: float, duration: float, interval: float | None) -> np.nd
     return t0 + np.minimum(np.arange(1, count + 1) * interval, duration)
 
 
-def _loop_state(
-    system: System, n_state: int, n_events: int, n_snapshots: int, sectors: int
-) -> loop.LoopState:
-    nc = system.clearance_body.shape[0]
-    # A step logs at most one crossing per event and one onset per joint: room for many steps.
+def _integrator(method: Method, n_state: int) -> object:
+    """The integrator state of ``method`` for n_state equations."""
+    if method == Method.DOPRI5:
+        return make_rk_state(n_state, DOPRI5)
+    return make_abm_state(n_state)
+
+
+def _kernel_arrays(
+    system: System, n_state: int, n_events: int, n_snapshots: int
+) -> tuple[Problem, loop.Log, loop.Scratch]:
+    """The problem the right-hand side reads, the run's log and the loop's scratch."""
+    table, state, element_log, scratch = make_journals(
+        system.journal_ints, system.journal_params, n_snapshots
+    )
+    n = n_state // 2
+    problem = Problem(
+        mech=system.mechanism,
+        elements=Elements(journal=table),
+        state=ElementState(journal=state),
+        scratch=ElementScratch(journal=scratch),
+        dyn=make_dynamics_scratch(n, constraint_count(system.mechanism)),
+    )
+    slots = system.journal_ints.shape[0]
+    # A step logs at most one crossing per event and one onset per slot: room for many steps.
     events = max(EVENT_CAPACITY, 16 * n_events)
-    impacts = max(EVENT_CAPACITY, 16 * nc)
-    state = ("y_pred", "yp_pred", "y_corr", "yp_corr", "y_scratch", "yp_scratch", "y_cut", "y_mid")
-    return loop.LoopState(
+    impacts = max(EVENT_CAPACITY, 16 * slots)
+    log = loop.Log(
         counters=np.zeros(N_COUNTERS, dtype=np.int64),
         max_violation=np.zeros(1),
-        t_old=np.zeros(1),
-        y_old=np.zeros(n_state),
-        yp_old=np.zeros(n_state),
-        event_prev=np.zeros(n_events),
         event_time=np.zeros(events),
         event_index=np.zeros(events, dtype=np.int64),
         event_rising=np.zeros(events, dtype=np.int64),
-        contact_totals=np.zeros((nc, N_TOTALS)),
         impact_time=np.zeros(impacts),
-        impact_joint=np.zeros(impacts, dtype=np.int64),
+        impact_slot=np.zeros(impacts, dtype=np.int64),
         impact_info=np.zeros((impacts, N_IMPACT_INFO)),
-        wear_snapshots=np.zeros((n_snapshots, nc, 2, sectors)),
-        **{name: np.zeros(n_state) for name in state},
+        elements=ElementLog(journal=element_log),
     )
+    work = loop.Scratch(
+        y=np.zeros(n_state),
+        yp=np.zeros(n_state),
+        y_cut=np.zeros(n_state),
+        y_mid=np.zeros(n_state),
+        event_prev=np.zeros(n_events),
+    )
+    return problem, log, work
 
 
 def simulate(
@@ -114,7 +136,6 @@ def simulate(
     t_end = t0 + solver.t_end
     output_times = _output_times(t0, solver.t_end, solver.output_interval)
     ctl = loop.Control(
-        method=int(solver.method),
         rtol=solver.rtol,
         atol=solver.atol,
         min_step=solver.min_step,
@@ -125,10 +146,11 @@ def simulate(
         rows_per_step=math.ceil(solver.max_step / solver.output_interval) + 2,
         snapshot_times=_snapshot_times(t0, solver.t_end, solver.wear_snapshot_interval),
     )
-    dp, ab, wk = make_dopri5_state(n_state), make_abm_state(n_state), make_work(system)
-    ls = _loop_state(
-        system, n_state, len(model.events), ctl.snapshot_times.shape[0], wk.wear.shape[2]
+    integ = _integrator(solver.method, n_state)
+    problem, log, scratch = _kernel_arrays(
+        system, n_state, len(model.events), ctl.snapshot_times.shape[0]
     )
+    journals = problem.state.journal
     joint_names = clearance_joint_names(model)
     impacts: list[tuple] = []
     columns = column_names(model)
@@ -138,77 +160,80 @@ def simulate(
 
     y0 = assembly.y0
     if initial is not None:
-        _check_initial(initial, y0, wk.wear)
+        _check_initial(initial, y0, journals.wear)
         y0 = initial.y
-        wk.wear[:] = initial.wear
-        wk.contact_on[:] = initial.contact_on
-        wk.impact_speed[:] = initial.impact_speed
+        journals.wear[:] = initial.wear
+        journals.contact_on[:] = initial.contact_on
+        journals.impact_speed[:] = initial.impact_speed
 
     wall_start = time.perf_counter()
     status = Status.RUNNING
-    if not loop.start(system, ctl, ls, dp, ab, wk, t0, y0, solver.initial_step):
+    if not loop.start(problem, integ, system.events, log, scratch, t0, y0, solver.initial_step):
         status = Status.SINGULAR
     chunk = min(solver.t_end, MIN_CHUNK_STEPS * solver.max_step)
     budget = MIN_CHUNK_STEPS  # steps a chunk may take, so a stalled run still hands back
     with stop_requests() as stop_requested:
         while status == Status.RUNNING:
-            t_before = loop.current_time(ctl, dp, ab)
+            t_before = float(integ.scal[S_T])
             chunk_start = time.perf_counter()
-            steps_before = ls.counters[Counter.ACCEPTED] + ls.counters[Counter.REJECTED]
+            steps_before = log.counters[Counter.ACCEPTED] + log.counters[Counter.REJECTED]
             code, rows = loop.advance(
-                system, ctl, ls, dp, ab, wk, buffer, t_before + chunk, steps_before + budget
-            )
+                problem, integ, system.events, ctl, log, scratch, buffer,
+                t_before + chunk, steps_before + budget,
+            )  # fmt: skip
             status = Status(code)
             blocks.append(buffer[:rows].copy())
-            for i in range(ls.counters[Counter.EVENTS]):
-                direction = "rising" if ls.event_rising[i] else "falling"
-                events.append((ls.event_time[i], model.events[ls.event_index[i]].name, direction))
-            ls.counters[Counter.EVENTS] = 0
+            for i in range(log.counters[Counter.EVENTS]):
+                direction = "rising" if log.event_rising[i] else "falling"
+                name = model.events[log.event_index[i]].name
+                events.append((log.event_time[i], name, direction))
+            log.counters[Counter.EVENTS] = 0
             impacts += impact_rows(
-                joint_names, ls.impact_time, ls.impact_joint, ls.impact_info,
-                ls.counters[Counter.IMPACTS],
+                joint_names, log.impact_time, log.impact_slot, log.impact_info,
+                log.counters[Counter.IMPACTS],
             )  # fmt: skip
-            ls.counters[Counter.IMPACTS] = 0
-            t_now = loop.current_time(ctl, dp, ab)
+            log.counters[Counter.IMPACTS] = 0
+            t_now = float(integ.scal[S_T])
             if progress is not None:
                 progress(t_now - t0, solver.t_end)
             if stop_requested[0] and status == Status.RUNNING:
                 status = Status.INTERRUPTED
             elapsed = time.perf_counter() - chunk_start
-            steps = ls.counters[Counter.ACCEPTED] + ls.counters[Counter.REJECTED] - steps_before
+            steps = log.counters[Counter.ACCEPTED] + log.counters[Counter.REJECTED] - steps_before
             if elapsed > 0:  # aim the next chunk at CHUNK_WALL_S, in time and in steps
                 budget = max(MIN_CHUNK_STEPS, min(int(steps / elapsed * CHUNK_WALL_S), 10 * budget))
                 if t_now > t_before:
                     rate = (t_now - t_before) / elapsed
                     chunk = min(max(rate * CHUNK_WALL_S, 1e-9 * solver.t_end), 10 * chunk)
     wall = time.perf_counter() - wall_start
-    t_reached = float(loop.current_time(ctl, dp, ab))
+    t_reached = float(integ.scal[S_T])
     final = RunState(
         time=t_reached,
-        y=loop.current_state(ctl, dp, ab).copy(),
-        wear=wk.wear.copy(),
-        contact_on=wk.contact_on.copy(),
-        impact_speed=wk.impact_speed.copy(),
+        y=integ.y.copy(),
+        wear=journals.wear.copy(),
+        contact_on=journals.contact_on.copy(),
+        impact_speed=journals.impact_speed.copy(),
     )
 
     data = np.concatenate(blocks) if blocks else np.zeros((0, len(columns)))
     stats = {
         "simulation_wall_s": wall,
         "t_reached": t_reached,
-        "accepted_steps": int(ls.counters[Counter.ACCEPTED]),
-        "rejected_steps": int(ls.counters[Counter.REJECTED]),
-        "rhs_evaluations": int(ls.counters[Counter.RHS_EVALS]),
-        "min_step_hits": int(ls.counters[Counter.MIN_STEP_HITS]),
-        "max_constraint_violation": float(ls.max_violation[0]),
+        "accepted_steps": int(log.counters[Counter.ACCEPTED]),
+        "rejected_steps": int(log.counters[Counter.REJECTED]),
+        "rhs_evaluations": int(log.counters[Counter.RHS_EVALS]),
+        "min_step_hits": int(log.counters[Counter.MIN_STEP_HITS]),
+        "max_constraint_violation": float(log.max_violation[0]),
         "assembly_iterations": assembly.iterations,
-        "degrees_of_freedom": assembly.dof + 2 * len(joint_names),
+        "degrees_of_freedom": assembly.dof + DEGREES_OF_FREEDOM * len(joint_names),
     }
     tables = {}
     if joint_names:
-        tables["wear"] = wear_table(model, wk.wear)
+        tables["wear"] = wear_table(model, journals.wear)
         tables["wear_snapshots"] = snapshot_table(
-            model, ctl.snapshot_times, ls.wear_snapshots, int(ls.counters[Counter.SNAPSHOTS])
-        )
+            model, ctl.snapshot_times, log.elements.journal.snapshots,
+            int(log.counters[Counter.SNAPSHOTS]),
+        )  # fmt: skip
         tables["impacts"] = pd.DataFrame(impacts, columns=IMPACT_COLUMNS)
     summary = {
         "jointwear_version": __version__,
@@ -220,7 +245,7 @@ def simulate(
     }
     if joint_names:
         summary["clearance_joints"] = joint_summaries(
-            model, ls.contact_totals, wk.wear, t_reached - t0
+            model, log.elements.journal.totals, journals.wear, t_reached - t0
         )
     return Results(
         model=model,

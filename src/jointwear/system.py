@@ -1,8 +1,8 @@
 """From a validated ``Model`` to the arrays the kernels run on.
 
 ``build_system`` turns names into indices and tables: the kernels never see a name or a unit.
-The ``System`` is immutable for a run; ``Work`` holds the scratch arrays of one right-hand
-side evaluation.
+The ``System`` is immutable for a run: the mechanism's tables, each contact element kind's
+table, and the user events.
 """
 
 from __future__ import annotations
@@ -12,26 +12,19 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import NDArray
 
-from .kernels import joint_contact as jc
 from .kernels.codes import DriverKind, EventDirection, FunctionKind
-from .kernels.joint_contact import N_CONTACT, N_LAW, N_PARAM
+from .kernels.elements import journal as jc
+from .kernels.loop import UserEvents
 from .model import Model
-from .model_clearance import (
-    FRICTION_LAWS,
-    NORMAL_LAWS,
-    WEAR_DISTRIBUTIONS,
-    WEAR_LAWS,
-    Clearance,
-)
+from .model_clearance import WEAR_DISTRIBUTIONS, Clearance, law_parameters
 
 GROUND = -1
 MAX_COEFFICIENTS = 8
 BODY_COLUMNS = ("x", "y", "phi", "vx", "vy", "omega", "ax", "ay", "alpha")
-CLEARANCE_COLUMNS = ("fx", "fy", "ex", "ey", "delta", "fn", "ft")
 
 
-class System(NamedTuple):
-    """A mechanism as arrays (SI units). Body index -1 is the ground."""
+class Mechanism(NamedTuple):
+    """The constrained mechanism as the kernels read it (SI). Body index -1 is the ground."""
 
     mass: NDArray[np.float64]  # (nb,) [kg]
     inv_mass: NDArray[np.float64]  # (3 nb,) diagonal of M^-1 [1/kg, 1/(kg m^2)]
@@ -54,65 +47,22 @@ class System(NamedTuple):
     force_point: NDArray[np.float64]  # (nl, 2, 2) [m]
     force_function: NDArray[np.int64]  # (nl, 2) function rows of (fx, fy) or (torque, -)
     force_param: NDArray[np.float64]  # (nl, 3) stiffness, damping, free length or angle
-    event_body: NDArray[np.int64]  # (ne,)
-    event_coordinate: NDArray[np.int64]  # (ne,) 0 x, 1 y, 2 phi
-    event_value: NDArray[np.float64]  # (ne,)
-    event_direction: NDArray[np.int64]  # (ne,) EventDirection
-    clearance_body: NDArray[np.int64]  # (nc, 2) bearing body, journal body
-    clearance_point: NDArray[np.float64]  # (nc, 2, 2) bearing and journal centres, local [m]
-    clearance_law: NDArray[np.int64]  # (nc, N_LAW) law codes and options, kernels.joint_contact
-    clearance_param: NDArray[np.float64]  # (nc, N_PARAM) SI parameters, kernels.joint_contact
-    clearance_sectors: NDArray[np.int64]  # (nc,) sectors of each surface
     baumgarte_alpha: float  # [1/s]
     baumgarte_beta: float  # [1/s]
 
 
-class Work(NamedTuple):
-    """Mutable arrays of a run (m constraint rows, n coordinates, nc clearance joints).
+class System(NamedTuple):
+    """A model as arrays: the mechanism, the contact elements' tables, the user events."""
 
-    Scratch of one right-hand-side evaluation, and the clearance joints' contact state, which
-    the loop updates between steps (``kernels.contact_steps``).
-    """
-
-    g: NDArray[np.float64]  # (n,) generalised applied forces
-    phi: NDArray[np.float64]  # (m,)
-    cq: NDArray[np.float64]  # (m, n)
-    gamma: NDArray[np.float64]  # (m,)
-    phi_t: NDArray[np.float64]  # (m,)
-    b: NDArray[np.float64]  # (m,) right side of the Schur system
-    schur: NDArray[np.float64]  # (m, m)
-    lam: NDArray[np.float64]  # (m,) Lagrange multipliers
-    contact: NDArray[np.float64]  # (nc, N_CONTACT) last contact evaluation, joint_contact.C_*
-    contact_on: NDArray[np.int64]  # (nc,) 1 while a contact period lasts
-    impact_speed: NDArray[np.float64]  # (nc,) penetration rate at the period's onset [m/s]
-    wear: NDArray[np.float64]  # (nc, 2, max sectors) wear depth of bearing, journal [m]
+    mechanism: Mechanism
+    journal_ints: NDArray[np.int64]  # (nc, journal.N_INTS) revolute clearance joints
+    journal_params: NDArray[np.float64]  # (nc, journal.N_PARAMS)
+    events: UserEvents
 
 
-def make_work(system: System) -> Work:
-    """Allocate the arrays of a run of ``system``, without contact and wear."""
-    n = system.inv_mass.shape[0]
-    m = constraint_count(system)
-    nc = system.clearance_body.shape[0]
-    sectors = int(system.clearance_sectors.max(initial=1))
-    return Work(
-        g=np.zeros(n),
-        phi=np.zeros(m),
-        cq=np.zeros((m, n)),
-        gamma=np.zeros(m),
-        phi_t=np.zeros(m),
-        b=np.zeros(m),
-        schur=np.zeros((m, m)),
-        lam=np.zeros(m),
-        contact=np.zeros((nc, N_CONTACT)),
-        contact_on=np.zeros(nc, dtype=np.int64),
-        impact_speed=np.zeros(nc),
-        wear=np.zeros((nc, 2, sectors)),
-    )
-
-
-def constraint_count(system: System) -> int:
+def constraint_count(mechanism: Mechanism) -> int:
     """Number of constraint equations (2 per joint, 1 per driver)."""
-    return 2 * system.joint_kind.shape[0] + system.driver_kind.shape[0]
+    return 2 * mechanism.joint_kind.shape[0] + mechanism.driver_kind.shape[0]
 
 
 def column_names(model: Model) -> list[str]:
@@ -126,7 +76,7 @@ def column_names(model: Model) -> list[str]:
     for joint in (j for j in model.joints if j not in clearance):
         names += [f"{joint.name}_fx", f"{joint.name}_fy"]
     for joint in clearance:
-        names += [f"{joint.name}_{c}" for c in CLEARANCE_COLUMNS]
+        names += [f"{joint.name}_{c}" for c in jc.OUTPUT_NAMES]
     names += ["energy_kinetic", "energy_potential"]
     if clearance:
         names.append("energy_contact")
@@ -166,47 +116,39 @@ def _table(rows: list, shape: tuple[int, ...], dtype: type) -> NDArray:
     return np.array(rows, dtype=dtype).reshape((len(rows), *shape))
 
 
-def _friction_parameters(clearance: Clearance) -> list[float]:
-    """(p0, p1, p2) of the friction law, as ``kernels.friction.tangential_force`` reads them."""
-    if clearance.friction_law == "ambrosio":
-        return [clearance.no_friction_speed, clearance.full_friction_speed, 0.0]
-    if clearance.friction_law == "coulomb":
-        return [clearance.regularisation_speed, 0.0, 0.0]
-    return [
-        clearance.static_friction_coefficient,
-        clearance.stiction_speed,
-        clearance.transition_speed,
-    ]
-
-
-def _clearance_row(clearance: Clearance) -> tuple[list[int], NDArray[np.float64]]:
-    """The law codes and the parameter row of one clearance joint."""
-    law = [0] * N_LAW
-    law[jc.L_NORMAL] = int(NORMAL_LAWS[clearance.normal_law])
-    law[jc.L_FRICTION] = int(FRICTION_LAWS[clearance.friction_law])
-    law[jc.L_WEAR] = int(WEAR_LAWS[clearance.wear_law])
-    law[jc.L_PEAK] = int(WEAR_DISTRIBUTIONS[clearance.wear_distribution])
-    law[jc.L_FEEDBACK] = int(clearance.wear_feedback)
-    param = np.zeros(N_PARAM)
+def _clearance_row(
+    clearance: Clearance, bearing: int, journal: int, centres: list
+) -> tuple[list[int], NDArray[np.float64]]:
+    """The integer and the parameter row of one clearance joint (``kernels.elements.journal``)."""
+    laws = law_parameters(clearance)
+    ints = [0] * jc.N_INTS
+    ints[jc.I_BEARING] = bearing
+    ints[jc.I_JOURNAL] = journal
+    ints[jc.I_NORMAL] = laws["normal"].code
+    ints[jc.I_FRICTION] = laws["friction"].code
+    ints[jc.I_WEAR] = laws["wear"].code
+    ints[jc.I_PEAK] = int(WEAR_DISTRIBUTIONS[clearance.wear_distribution])
+    ints[jc.I_FEEDBACK] = int(clearance.wear_feedback)
+    ints[jc.I_SECTORS] = clearance.sectors
+    param = np.zeros(jc.N_PARAMS)
+    param[[jc.P_SB_X, jc.P_SB_Y]] = centres[0]
+    param[[jc.P_SJ_X, jc.P_SJ_Y]] = centres[1]
     param[jc.P_RB] = clearance.bearing_radius
     param[jc.P_RJ] = clearance.journal_radius
     param[jc.P_C] = clearance.radial_clearance
     param[jc.P_K] = clearance.stiffness
     param[jc.P_EXP] = clearance.exponent
-    param[jc.P_CE] = clearance.restitution_coefficient or 1.0
+    (param[jc.P_CE],) = laws["normal"].parameters
     param[jc.P_CF] = clearance.friction_coefficient
-    param[[jc.P_F0, jc.P_F1, jc.P_F2]] = _friction_parameters(clearance)
-    if clearance.wear_law == "reye":
-        param[jc.P_WEAR] = clearance.shear_strength
-    else:
-        param[jc.P_WEAR] = clearance.archard_coefficient
+    param[[jc.P_F0, jc.P_F1, jc.P_F2]] = laws["friction"].parameters
+    param[jc.P_WEAR] = laws["wear"].parameters[0]
     param[jc.P_SHARE] = clearance.journal_wear_share
     param[jc.P_WIDTH] = clearance.width
     param[jc.P_RSTAR] = clearance.relative_radius
     param[jc.P_ESTAR] = clearance.contact_modulus
     param[jc.P_MIN_SPEED] = clearance.min_impact_speed
     param[jc.P_TOL] = clearance.contact_tolerance
-    return law, param
+    return ints, param
 
 
 def build_system(model: Model, *, ideal: bool = False) -> System:
@@ -233,17 +175,15 @@ def build_system(model: Model, *, ideal: bool = False) -> System:
     joints = {"kind": [], "body": [], "point": [], "axis": [], "angle0": [], "row": []}
     clearances = model.clearance_joints
     kernel_index: dict[str, int] = {}  # ideal joints: row of the kernels' joint table
-    clear = {"body": [], "point": [], "law": [], "param": [], "sectors": []}
+    clear = {"ints": [], "params": []}
     row = 0
     for joint in model.joints:
         b1, b2 = joint.bodies
         if joint in clearances and not ideal:
-            law, param = _clearance_row(joint.clearance)
-            clear["body"].append([index[b1], index[b2]])
-            clear["point"].append([local(b1, joint.points[0]), local(b2, joint.points[1])])
-            clear["law"].append(law)
-            clear["param"].append(param)
-            clear["sectors"].append(joint.clearance.sectors)
+            centres = [local(b1, joint.points[0]), local(b2, joint.points[1])]
+            ints, params = _clearance_row(joint.clearance, index[b1], index[b2], centres)
+            clear["ints"].append(ints)
+            clear["params"].append(params)
             continue
         kernel_index[joint.name] = len(joints["kind"])
         joints["kind"].append(int(joint.kind))
@@ -307,10 +247,9 @@ def build_system(model: Model, *, ideal: bool = False) -> System:
         loads["param"].append(param)
 
     coordinate = {"x": 0, "y": 1, "phi": 2}
-    events = model.events
     mass = np.array([b.mass for b in model.bodies], dtype=float)
     inertia = np.array([b.inertia for b in model.bodies], dtype=float)
-    return System(
+    mechanism = Mechanism(
         mass=mass,
         inv_mass=1.0 / np.column_stack([mass, mass, inertia]).ravel(),
         gravity=gravity,
@@ -332,19 +271,22 @@ def build_system(model: Model, *, ideal: bool = False) -> System:
         force_point=_table(loads["point"], (2, 2), np.float64),
         force_function=_table(loads["function"], (2,), np.int64),
         force_param=_table(loads["param"], (3,), np.float64),
-        event_body=_table([index[e.body] for e in events], (), np.int64),
-        event_coordinate=_table([coordinate[e.coordinate] for e in events], (), np.int64),
-        event_value=_table([e.value for e in events], (), np.float64),
-        event_direction=_table(
-            [int(EventDirection[e.direction.upper()]) for e in events], (), np.int64
-        ),
-        clearance_body=_table(clear["body"], (2,), np.int64),
-        clearance_point=_table(clear["point"], (2, 2), np.float64),
-        clearance_law=_table(clear["law"], (N_LAW,), np.int64),
-        clearance_param=_table(clear["param"], (N_PARAM,), np.float64),
-        clearance_sectors=_table(clear["sectors"], (), np.int64),
         baumgarte_alpha=float(model.solver.baumgarte_alpha),
         baumgarte_beta=float(model.solver.baumgarte_beta),
+    )
+    events = UserEvents(
+        body=_table([index[e.body] for e in model.events], (), np.int64),
+        coordinate=_table([coordinate[e.coordinate] for e in model.events], (), np.int64),
+        value=_table([e.value for e in model.events], (), np.float64),
+        direction=_table(
+            [int(EventDirection[e.direction.upper()]) for e in model.events], (), np.int64
+        ),
+    )
+    return System(
+        mechanism=mechanism,
+        journal_ints=_table(clear["ints"], (jc.N_INTS,), np.int64),
+        journal_params=_table(clear["params"], (jc.N_PARAMS,), np.float64),
+        events=events,
     )
 
 

@@ -2,8 +2,8 @@
 
 numba counts references to every array it passes: each call of a compiled function that it
 does not inline increments and decrements the count of every array in its arguments, with an
-atomic operation each. The loop's state is several named tuples of about a hundred arrays in
-all, so on the paper's four-bar these atomic operations took about half of the run time.
+atomic operation each. The loop's arguments are named tuples of several dozen arrays in all; on the
+paper's four-bar these atomic operations once took about half of the run time.
 
 The arrays of a run are owned by the Python caller of ``loop.advance`` for the whole call, so
 the loop can work on views without an owner (a null ``meminfo``, as ``numba.carray`` makes),
@@ -16,7 +16,12 @@ from numba.extending import intrinsic
 
 
 def _unowned(context, builder, ty, value):
-    """The array ``value`` of type ``ty`` without its owner; other values unchanged."""
+    """``value`` of type ``ty`` with every array in it (nested tuples too) without owner."""
+    if isinstance(ty, types.BaseTuple):
+        for i, member in enumerate(ty.types):
+            item = builder.extract_value(value, i)
+            value = builder.insert_value(value, _unowned(context, builder, member, item), i)
+        return value
     if not isinstance(ty, types.Array):
         return value
     array = context.make_array(ty)(context, builder, value)
@@ -27,16 +32,12 @@ def _unowned(context, builder, ty, value):
 
 @intrinsic
 def borrow(typingctx, record):
-    """The named tuple ``record`` with each of its arrays replaced by a view without owner.
+    """The (nested) named tuple ``record`` with each array replaced by a view without owner.
 
     The views are valid while the caller of the compiled function holds ``record``.
     """
 
     def codegen(context, builder, signature, args):
-        (value,) = args
-        for i, member in enumerate(signature.args[0].types):
-            item = builder.extract_value(value, i)
-            value = builder.insert_value(value, _unowned(context, builder, member, item), i)
-        return value
+        return _unowned(context, builder, signature.args[0], args[0])
 
     return record(record), codegen

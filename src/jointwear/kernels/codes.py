@@ -1,7 +1,7 @@
 """Integer codes shared by the kernels and the Python API.
 
-The kernels see a law or a joint kind only as one of these integers; ``model.py`` maps
-the model file's names onto them.
+The kernels see a joint kind, a driver or a load only as one of these integers; ``model.py``
+maps the model file's names onto them. Law codes live with their laws (``kernels.laws``).
 """
 
 from enum import IntEnum
@@ -38,7 +38,7 @@ class ForceKind(IntEnum):
 
 
 class Method(IntEnum):
-    """Integrators."""
+    """Integrators (``kernels.integrate``): an explicit Runge-Kutta tableau, or Adams."""
 
     DOPRI5 = 0
     ABM = 1
@@ -77,27 +77,3 @@ class Counter(IntEnum):
 
 
 N_COUNTERS = len(Counter)
-
-
-class NormalLaw(IntEnum):
-    """Normal contact force laws (``kernels.contact``)."""
-
-    HERTZ = 0
-    LANKARANI_NIKRAVESH = 1
-    HUNT_CROSSLEY = 2
-    FLORES2011 = 3
-
-
-class FrictionLaw(IntEnum):
-    """Tangential (friction) force laws (``kernels.friction``)."""
-
-    COULOMB = 0
-    AMBROSIO = 1
-    STICK_SLIP = 2
-
-
-class WearLaw(IntEnum):
-    """Wear laws giving the depth rate dh/ds = coef * p (``kernels.wear``)."""
-
-    ARCHARD = 0
-    REYE = 1

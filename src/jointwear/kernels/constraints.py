@@ -26,7 +26,7 @@ def _add(cq, r, b, k, value):
         cq[r, 3 * b + k] += value
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _revolute(q, qd, i, j, s, r, phi, cq, gamma):
     aix, aiy = rotate(q, i, s[0, 0], s[0, 1])
     ajx, ajy = rotate(q, j, s[1, 0], s[1, 1])
@@ -48,7 +48,7 @@ def _revolute(q, qd, i, j, s, r, phi, cq, gamma):
     gamma[r + 1] = aiy * wi2 - ajy * wj2
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def line_projection(q, qd, i, j, s, vx, vy, r, phi, cq, gamma):
     """Row r: f = (A_i v) . (r_Pj - r_Pi), the second point projected on a body-i direction v.
 
@@ -81,47 +81,49 @@ def line_projection(q, qd, i, j, s, vx, vy, r, phi, cq, gamma):
     gamma[r] = -rest
 
 
-@njit(cache=True, inline="always")
-def evaluate_constraints(t, q, qd, sys, phi, cq, gamma, phi_t):
-    """Fill Phi, Phi_q, gamma and Phi_t for all joints and drivers of the system."""
-    cq[:, :] = 0.0
-    phi_t[:] = 0.0
-    for jt in range(sys.joint_kind.shape[0]):
-        i = sys.joint_body[jt, 0]
-        j = sys.joint_body[jt, 1]
-        s = sys.joint_point[jt]
-        r = sys.joint_row[jt]
-        if sys.joint_kind[jt] == JointKind.REVOLUTE:
+@njit(cache=True)
+def evaluate_constraints(t, q, qd, mech, phi, cq, gamma, phi_t):
+    """Fill Phi, Phi_q, gamma and Phi_t for all joints and drivers of the mechanism."""
+    for r in range(cq.shape[0]):
+        phi_t[r] = 0.0
+        for c in range(cq.shape[1]):
+            cq[r, c] = 0.0
+    for jt in range(mech.joint_kind.shape[0]):
+        i = mech.joint_body[jt, 0]
+        j = mech.joint_body[jt, 1]
+        s = mech.joint_point[jt]
+        r = mech.joint_row[jt]
+        if mech.joint_kind[jt] == JointKind.REVOLUTE:
             _revolute(q, qd, i, j, s, r, phi, cq, gamma)
         else:  # translational: relative angle, then the normal-to-axis projection
-            phi[r] = angle(q, j) - angle(q, i) - sys.joint_angle0[jt]
+            phi[r] = angle(q, j) - angle(q, i) - mech.joint_angle0[jt]
             _add(cq, r, i, 2, -1.0)
             _add(cq, r, j, 2, 1.0)
             gamma[r] = 0.0
-            ax = sys.joint_axis[jt, 0]
-            ay = sys.joint_axis[jt, 1]
+            ax = mech.joint_axis[jt, 0]
+            ay = mech.joint_axis[jt, 1]
             line_projection(q, qd, i, j, s, -ay, ax, r + 1, phi, cq, gamma)
-    for d in range(sys.driver_kind.shape[0]):
-        r = sys.driver_row[d]
-        fn = sys.driver_function[d]
-        f, fd, fdd = evaluate(sys.function_kind[fn], sys.function_param[fn], t)
-        if sys.driver_kind[d] == DriverKind.ANGLE:
-            i = sys.driver_body[d, 0]
-            j = sys.driver_body[d, 1]
+    for d in range(mech.driver_kind.shape[0]):
+        r = mech.driver_row[d]
+        fn = mech.driver_function[d]
+        f, fd, fdd = evaluate(mech.function_kind[fn], mech.function_param[fn], t)
+        if mech.driver_kind[d] == DriverKind.ANGLE:
+            i = mech.driver_body[d, 0]
+            j = mech.driver_body[d, 1]
             phi[r] = angle(q, j) - angle(q, i) - f
             _add(cq, r, i, 2, -1.0)
             _add(cq, r, j, 2, 1.0)
             gamma[r] = fdd
         else:
-            jt = sys.driver_joint[d]
+            jt = mech.driver_joint[d]
             line_projection(
                 q,
                 qd,
-                sys.joint_body[jt, 0],
-                sys.joint_body[jt, 1],
-                sys.joint_point[jt],
-                sys.joint_axis[jt, 0],
-                sys.joint_axis[jt, 1],
+                mech.joint_body[jt, 0],
+                mech.joint_body[jt, 1],
+                mech.joint_point[jt],
+                mech.joint_axis[jt, 0],
+                mech.joint_axis[jt, 1],
                 r,
                 phi,
                 cq,

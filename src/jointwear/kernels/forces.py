@@ -36,19 +36,19 @@ def _apply(q, g, b, sx, sy, fx, fy):
     g[3 * b + 2] += ax * fy - ay * fx
 
 
-@njit(cache=True, inline="always")
-def _function_value(sys, fn, t):
+@njit(cache=True)
+def _function_value(mech, fn, t):
     if fn < 0:
         return 0.0
-    return evaluate(sys.function_kind[fn], sys.function_param[fn], t)[0]
+    return evaluate(mech.function_kind[fn], mech.function_param[fn], t)[0]
 
 
-@njit(cache=True, inline="always")
-def _spring_axis(q, sys, e):
+@njit(cache=True)
+def _spring_axis(q, mech, e):
     """Unit vector u from point 1 to point 2 of load e, and the length between them [m]."""
-    s = sys.force_point[e]
-    p1x, p1y = point_position(q, sys.force_body[e, 0], s[0, 0], s[0, 1])
-    p2x, p2y = point_position(q, sys.force_body[e, 1], s[1, 0], s[1, 1])
+    s = mech.force_point[e]
+    p1x, p1y = point_position(q, mech.force_body[e, 0], s[0, 0], s[0, 1])
+    p2x, p2y = point_position(q, mech.force_body[e, 1], s[1, 0], s[1, 1])
     dx = p2x - p1x
     dy = p2y - p1y
     length = math.sqrt(dx * dx + dy * dy)
@@ -57,44 +57,44 @@ def _spring_axis(q, sys, e):
     return dx / length, dy / length, length
 
 
-@njit(cache=True, inline="always")
-def _spring_rate(q, qd, sys, e, ux, uy):
+@njit(cache=True)
+def _spring_rate(q, qd, mech, e, ux, uy):
     """Rate of change of the length between the two points of load e [m/s]."""
-    s = sys.force_point[e]
-    v1x, v1y = point_velocity(q, qd, sys.force_body[e, 0], s[0, 0], s[0, 1])
-    v2x, v2y = point_velocity(q, qd, sys.force_body[e, 1], s[1, 0], s[1, 1])
+    s = mech.force_point[e]
+    v1x, v1y = point_velocity(q, qd, mech.force_body[e, 0], s[0, 0], s[0, 1])
+    v2x, v2y = point_velocity(q, qd, mech.force_body[e, 1], s[1, 0], s[1, 1])
     return ux * (v2x - v1x) + uy * (v2y - v1y)
 
 
-@njit(cache=True, inline="always")
-def applied_forces(t, q, qd, sys, g):
+@njit(cache=True)
+def applied_forces(t, q, qd, mech, g):
     """Fill g [N, N, N m] with gravity and every applied load at time t [s]."""
-    nb = sys.mass.shape[0]
+    nb = mech.mass.shape[0]
     for b in range(nb):
-        g[3 * b] = sys.mass[b] * sys.gravity[0]
-        g[3 * b + 1] = sys.mass[b] * sys.gravity[1]
+        g[3 * b] = mech.mass[b] * mech.gravity[0]
+        g[3 * b + 1] = mech.mass[b] * mech.gravity[1]
         g[3 * b + 2] = 0.0
-    for e in range(sys.force_kind.shape[0]):
-        kind = sys.force_kind[e]
-        b1 = sys.force_body[e, 0]
-        b2 = sys.force_body[e, 1]
+    for e in range(mech.force_kind.shape[0]):
+        kind = mech.force_kind[e]
+        b1 = mech.force_body[e, 0]
+        b2 = mech.force_body[e, 1]
         if kind == ForceKind.POINT_FORCE:
-            fx = _function_value(sys, sys.force_function[e, 0], t)
-            fy = _function_value(sys, sys.force_function[e, 1], t)
-            _apply(q, g, b1, sys.force_point[e, 0, 0], sys.force_point[e, 0, 1], fx, fy)
+            fx = _function_value(mech, mech.force_function[e, 0], t)
+            fy = _function_value(mech, mech.force_function[e, 1], t)
+            _apply(q, g, b1, mech.force_point[e, 0, 0], mech.force_point[e, 0, 1], fx, fy)
         elif kind == ForceKind.TORQUE:
             if b1 >= 0:
-                g[3 * b1 + 2] += _function_value(sys, sys.force_function[e, 0], t)
+                g[3 * b1 + 2] += _function_value(mech, mech.force_function[e, 0], t)
         elif kind == ForceKind.SPRING_DAMPER:
-            k, c, l0 = sys.force_param[e, 0], sys.force_param[e, 1], sys.force_param[e, 2]
-            ux, uy, length = _spring_axis(q, sys, e)
-            rate = _spring_rate(q, qd, sys, e, ux, uy)
+            k, c, l0 = mech.force_param[e, 0], mech.force_param[e, 1], mech.force_param[e, 2]
+            ux, uy, length = _spring_axis(q, mech, e)
+            rate = _spring_rate(q, qd, mech, e, ux, uy)
             tension = k * (length - l0) + c * rate  # pulls the two points together
-            s = sys.force_point[e]
+            s = mech.force_point[e]
             _apply(q, g, b1, s[0, 0], s[0, 1], tension * ux, tension * uy)
             _apply(q, g, b2, s[1, 0], s[1, 1], -tension * ux, -tension * uy)
         else:  # rotational spring-damper on phi_2 - phi_1
-            k, c, a0 = sys.force_param[e, 0], sys.force_param[e, 1], sys.force_param[e, 2]
+            k, c, a0 = mech.force_param[e, 0], mech.force_param[e, 1], mech.force_param[e, 2]
             rel = angle(q, b2) - angle(q, b1) - a0
             rate = angular_velocity(qd, b2) - angular_velocity(qd, b1)
             torque = k * rel + c * rate
@@ -105,17 +105,17 @@ def applied_forces(t, q, qd, sys, g):
 
 
 @njit(cache=True)
-def potential_energy(q, sys):
+def potential_energy(q, mech):
     """Gravitational and spring potential energy [J] (zero at the origin / free length)."""
     energy = 0.0
-    for b in range(sys.mass.shape[0]):
-        energy -= sys.mass[b] * (sys.gravity[0] * q[3 * b] + sys.gravity[1] * q[3 * b + 1])
-    for e in range(sys.force_kind.shape[0]):
-        kind = sys.force_kind[e]
+    for b in range(mech.mass.shape[0]):
+        energy -= mech.mass[b] * (mech.gravity[0] * q[3 * b] + mech.gravity[1] * q[3 * b + 1])
+    for e in range(mech.force_kind.shape[0]):
+        kind = mech.force_kind[e]
         if kind == ForceKind.SPRING_DAMPER:
-            length = _spring_axis(q, sys, e)[2]
-            energy += 0.5 * sys.force_param[e, 0] * (length - sys.force_param[e, 2]) ** 2
+            length = _spring_axis(q, mech, e)[2]
+            energy += 0.5 * mech.force_param[e, 0] * (length - mech.force_param[e, 2]) ** 2
         elif kind == ForceKind.ROTATIONAL_SPRING_DAMPER:
-            rel = angle(q, sys.force_body[e, 1]) - angle(q, sys.force_body[e, 0])
-            energy += 0.5 * sys.force_param[e, 0] * (rel - sys.force_param[e, 2]) ** 2
+            rel = angle(q, mech.force_body[e, 1]) - angle(q, mech.force_body[e, 0])
+            energy += 0.5 * mech.force_param[e, 0] * (rel - mech.force_param[e, 2]) ** 2
     return energy

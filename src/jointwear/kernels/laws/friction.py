@@ -46,9 +46,11 @@ J. Dyn. Syst. Meas. Control 107 (1985) 100-103.
 MSC Software, Adams/Solver reference, CONTACT statement: friction force.
 """
 
+from enum import IntEnum
+
 from numba import njit
 
-from .codes import FrictionLaw
+from .registry import Key, Law
 
 
 @njit(cache=True)
@@ -122,13 +124,58 @@ def stick_slip(v_t: float, f_n: float, c_f: float, mu_s: float, dv: float, v_tr:
     return -mu * f_n * _sign(v_t)
 
 
+def _pack_coulomb(values: dict) -> tuple[float, float, float]:
+    return (values["regularisation_speed"], 0.0, 0.0)
+
+
+def _pack_ambrosio(values: dict) -> tuple[float, float, float]:
+    v0, v1 = values["no_friction_speed"], values["full_friction_speed"]
+    if v1 <= v0:
+        raise ValueError("full_friction_speed must be larger than no_friction_speed")
+    return (v0, v1, 0.0)
+
+
+def _pack_stick_slip(values: dict) -> tuple[float, float, float]:
+    if values.get("static_friction_coefficient") is None:
+        raise ValueError("needs static_friction_coefficient")
+    keys = ("static_friction_coefficient", "stiction_speed", "transition_speed")
+    return tuple(float(values[key]) for key in keys)
+
+
+FRICTION_LAWS = (
+    Law(
+        "coulomb", 0,
+        (Key("regularisation_speed", "m/s", 1e-4, positive=True),),
+        _pack_coulomb, "c_f F_N, linear through zero below the regularisation speed",
+    ),
+    Law(
+        "ambrosio", 1,
+        (
+            Key("no_friction_speed", "m/s", 1e-4),
+            Key("full_friction_speed", "m/s", 1e-2, positive=True),
+        ),
+        _pack_ambrosio, "c_f c_d(v_T) F_N, Ambrosio's dynamic correction (Flores 2009, Eq. 19)",
+    ),
+    Law(
+        "stick_slip", 2,
+        (
+            Key("static_friction_coefficient", "", None),
+            Key("stiction_speed", "m/s", 1e-4, positive=True),
+            Key("transition_speed", "m/s", 1e-2, positive=True),
+        ),
+        _pack_stick_slip, "velocity-based Karnopp-type stick-slip (Karnopp 1985)",
+    ),
+)  # fmt: skip
+FrictionLaw = IntEnum("FrictionLaw", {law.name.upper(): law.code for law in FRICTION_LAWS})
+
+
 @njit(cache=True)
 def tangential_force(
     law: int, v_t: float, f_n: float, c_f: float, p0: float, p1: float, p2: float
 ) -> float:
-    """Friction force f_t [N] by the law with code ``law`` (a ``FrictionLaw``).
+    """Friction force f_t [N] by the law with code ``law`` (``FRICTION_LAWS``).
 
-    p0, p1, p2 as in the module docstring's table.
+    p0, p1, p2 as in the module docstring's table, packed by the law's record.
     """
     if law == FrictionLaw.AMBROSIO:
         return ambrosio(v_t, f_n, c_f, p0, p1)

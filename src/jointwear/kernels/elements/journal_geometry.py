@@ -20,7 +20,7 @@ import math
 
 from numba import njit
 
-from .kinematics import angle, angular_velocity, point_position, point_velocity
+from ..kinematics import angle, angular_velocity, point_position, point_velocity
 
 
 @njit(cache=True)

@@ -29,10 +29,11 @@ K.L. Johnson, Contact Mechanics, Cambridge University Press (1985), ch. 4.
 """
 
 import math
+from enum import IntEnum
 
 from numba import njit
 
-from .codes import NormalLaw
+from .registry import Key, Law, pack_in_order
 
 
 @njit(cache=True)
@@ -108,6 +109,31 @@ def flores2011(
     return _damped(delta, delta_dot, delta_dot_minus, k, n, 1.6 * (1.0 - c_e) / c_e)
 
 
+RESTITUTION = Key(
+    "restitution_coefficient", "", None, positive=True, high=1.0,
+    help="coefficient of restitution c_e (0 < c_e <= 1)",
+)  # fmt: skip
+NORMAL_LAWS = (
+    Law(
+        "hertz", 0, (), lambda values: (1.0,),
+        "K delta^n, no damping (Flores 2009, Eq. 18, D = 0)",
+    ),
+    Law(
+        "lankarani_nikravesh", 1, (RESTITUTION,), pack_in_order(RESTITUTION.name),
+        "K delta^n [1 + 3 (1 - c_e^2)/4 delta_dot/delta_dot_minus] (Lankarani, Nikravesh 1990)",
+    ),
+    Law(
+        "hunt_crossley", 2, (RESTITUTION,), pack_in_order(RESTITUTION.name),
+        "K delta^n [1 + 3 (1 - c_e)/2 delta_dot/delta_dot_minus] (Hunt, Crossley 1975)",
+    ),
+    Law(
+        "flores2011", 3, (RESTITUTION,), pack_in_order(RESTITUTION.name),
+        "K delta^n [1 + 8 (1 - c_e)/(5 c_e) delta_dot/delta_dot_minus] (Flores et al. 2011)",
+    ),
+)  # fmt: skip
+NormalLaw = IntEnum("NormalLaw", {law.name.upper(): law.code for law in NORMAL_LAWS})
+
+
 @njit(cache=True)
 def normal_force(
     law: int,
@@ -118,7 +144,7 @@ def normal_force(
     n: float,
     c_e: float,
 ) -> float:
-    """Normal force [N] by the law with code ``law`` (a ``NormalLaw``)."""
+    """Normal force [N] by the law with code ``law`` (``NORMAL_LAWS``); c_e packed by it."""
     if law == NormalLaw.LANKARANI_NIKRAVESH:
         return lankarani_nikravesh(delta, delta_dot, delta_dot_minus, k, n, c_e)
     if law == NormalLaw.HUNT_CROSSLEY:

@@ -50,7 +50,7 @@ from typing import NamedTuple
 import numpy as np
 from numba import njit
 
-from jointwear.kernels.stepsize import clip_step, hits_stop
+from .stepsize import clip_step, hits_stop
 
 KMAX = 12  # highest order
 NW = KMAX + 3  # length of the difference tables (phi_1..phi_{KMAX+2}, 1-based i at i-1)
@@ -84,10 +84,15 @@ class AbmState(NamedTuple):
 
     y: np.ndarray  # (n,) solution at scal[S_T]
     yp: np.ndarray  # (n,) f(t, y)
+    y_old: np.ndarray  # (n,) solution at the start of the last accepted step
+    yp_old: np.ndarray  # (n,) f there
     phi: np.ndarray  # (NW, n) phi_i at the last accepted point
     phis: np.ndarray  # (NW, n) phi*_i for the step being tried
     psum: np.ndarray  # (n,) sum_{i<=k} phi*_i
     p: np.ndarray  # (n,) predicted solution
+    fp: np.ndarray  # (n,) f at the prediction (the caller's E of PECE)
+    y_corr: np.ndarray  # (n,) corrected solution
+    yp_corr: np.ndarray  # (n,) f there (the final E)
     wt: np.ndarray  # (n,) error weights atol + rtol |y| of the step being tried
     psi: np.ndarray  # (NW,) psi_i at the last accepted point
     psi_new: np.ndarray  # (NW,) psi_i for the step being tried
@@ -103,10 +108,15 @@ def make_abm_state(n: int) -> AbmState:
     return AbmState(
         y=np.zeros(n),
         yp=np.zeros(n),
+        y_old=np.zeros(n),
+        yp_old=np.zeros(n),
         phi=np.zeros((NW, n)),
         phis=np.zeros((NW, n)),
         psum=np.zeros(n),
         p=np.zeros(n),
+        fp=np.zeros(n),
+        y_corr=np.zeros(n),
+        yp_corr=np.zeros(n),
         wt=np.ones(n),
         psi=np.zeros(NW),
         psi_new=np.zeros(NW),
@@ -125,14 +135,16 @@ def abm_start(st: AbmState, t: float, y: np.ndarray, yp: np.ndarray, h: float) -
     ``yp = f(t, y)`` is evaluated by the caller. ``h`` [s] is the first step to try; make
     it small, the start phase doubles it every step. No interpolation until the next accept.
     """
-    st.y[:] = y
-    st.yp[:] = yp
-    st.phi[:, :] = 0.0
-    st.phi[0, :] = yp
-    st.phis[:, :] = 0.0
+    for j in range(y.shape[0]):
+        st.y[j] = y[j]
+        st.yp[j] = yp[j]
+        for i in range(NW):
+            st.phi[i, j] = yp[j] if i == 0 else 0.0
+            st.phis[i, j] = 0.0
     for i in range(NW):
         st.psi[i] = (i + 1) * h  # fictitious history: only multiplies zero differences
-    st.scal[:] = 0.0
+    for i in range(N_SCAL):
+        st.scal[i] = 0.0
     st.scal[S_T] = t
     st.scal[S_TNEW] = t
     st.scal[S_H] = h
@@ -161,7 +173,8 @@ def _coefficients(st: AbmState, h: float, k: int) -> None:
         for j in range(n):
             st.phis[i, j] = beta * st.phi[i, j]
     # g_i = int_0^1 c_i(s) ds; st.poly holds the coefficients of c_i in powers of s
-    st.poly[:] = 0.0
+    for i in range(NW):
+        st.poly[i] = 0.0
     st.poly[0] = 1.0
     st.g[0] = 1.0
     for i in range(1, k + 2):
@@ -292,9 +305,12 @@ def abm_accept(st: AbmState, y_corr: np.ndarray, yp_corr: np.ndarray) -> None:
         s3 += r * r
         for i in range(k - 1, -1, -1):
             st.phi[i, j] = st.phis[i, j] + st.phi[i + 1, j]
+        st.y_old[j] = st.y[j]
+        st.yp_old[j] = st.yp[j]
         st.y[j] = y_corr[j]
         st.yp[j] = yp_corr[j]
-    st.psi[:] = st.psi_new
+    for i in range(NW):
+        st.psi[i] = st.psi_new[i]
     ns = st.ints[I_NS]
     ns = ns + 1 if h == st.scal[S_HOLD] else 1
     st.ints[I_NS] = min(ns, NW)
@@ -373,7 +389,8 @@ def _interpolate(st: AbmState, t_out: float, out: np.ndarray, derivative: bool) 
     sigma = (t_out - st.scal[S_T]) / h
     # d_1 = 1, d_{i+1}(sigma) = d_i(sigma) (psi_{i-1} + h sigma) / psi_i, psi_0 = 0;
     # D_i(sigma) = int_0^sigma d_i; st.coef[i-1] receives D_i h (or d_i)
-    st.poly[:] = 0.0
+    for i in range(NW):
+        st.poly[i] = 0.0
     st.poly[0] = 1.0
     for i in range(kk):
         if i > 0:
@@ -401,7 +418,8 @@ def abm_interpolate(st: AbmState, t_out: float, out: np.ndarray) -> None:
     disturb it). Before any step since the (re)start, ``out`` is the current ``y``.
     """
     if st.ints[I_KOLD] == 0:
-        out[:] = st.y
+        for j in range(out.shape[0]):
+            out[j] = st.y[j]
     else:
         _interpolate(st, t_out, out, False)
 
@@ -410,6 +428,32 @@ def abm_interpolate(st: AbmState, t_out: float, out: np.ndarray) -> None:
 def abm_interpolate_derivative(st: AbmState, t_out: float, out: np.ndarray) -> None:
     """Time derivative of the interpolant at ``t_out`` (``yp`` before any step)."""
     if st.ints[I_KOLD] == 0:
-        out[:] = st.yp
+        for j in range(out.shape[0]):
+            out[j] = st.yp[j]
     else:
         _interpolate(st, t_out, out, True)
+
+
+@njit(cache=True)
+def abm_interpolate_ends(st: AbmState, t_out: float, out: np.ndarray) -> None:
+    """Cubic Hermite interpolant of (y, y') at both ends of the last accepted step.
+
+    Unlike ``abm_interpolate`` (which integrates the corrected derivative and so misses
+    ``y_old`` at the step's start by the local error), it passes through both ends exactly,
+    which the contact logic needs to put a penetration on the right side of an onset.
+    """
+    t_new = st.scal[S_T]
+    h = st.scal[S_HOLD]
+    if st.ints[I_KOLD] == 0 or t_out == t_new:
+        for j in range(out.shape[0]):
+            out[j] = st.y[j]
+        return
+    s = (t_out - (t_new - h)) / h
+    s2 = s * s
+    s3 = s2 * s
+    w_y0 = 2.0 * s3 - 3.0 * s2 + 1.0
+    w_f0 = (s3 - 2.0 * s2 + s) * h
+    w_y1 = 3.0 * s2 - 2.0 * s3
+    w_f1 = (s3 - s2) * h
+    for j in range(out.shape[0]):
+        out[j] = w_y0 * st.y_old[j] + w_f0 * st.yp_old[j] + w_y1 * st.y[j] + w_f1 * st.yp[j]

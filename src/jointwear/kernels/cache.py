@@ -1,0 +1,66 @@
+"""A compiled-kernel cache that cannot go stale.
+
+numba stamps each cached function with a hash of its own source file only, so editing a
+kernel that others call (a law, the kinematics) left its callers' cached machine code in
+place. Every kernel here is stamped instead with one hash of all the kernel sources and of
+numba's version: any edit under ``kernels/`` recompiles all of them on the next run.
+
+The stamp rides on numba's cache locators (``numba.core.caching``), which numba lets a
+project replace (``NUMBA_CACHE_LOCATOR_CLASSES``); the numba range in ``pyproject.toml``
+is the one this was written and tested against.
+"""
+
+import hashlib
+import os
+
+import numba
+from numba.core import caching
+
+KERNELS = os.path.dirname(os.path.abspath(__file__))
+
+
+def _sources_digest() -> str:
+    """sha256 of every kernel source (path and content) and of numba's version."""
+    digest = hashlib.sha256(numba.__version__.encode())
+    for folder, _, files in sorted(os.walk(KERNELS)):
+        for name in sorted(files):
+            if name.endswith(".py"):
+                path = os.path.join(folder, name)
+                digest.update(os.path.relpath(path, KERNELS).encode())
+                with open(path, "rb") as source:
+                    digest.update(source.read())
+    return digest.hexdigest()
+
+
+STAMP = _sources_digest()
+
+
+def _tree_stamped(base: type) -> type:
+    """``base`` (a numba locator) for kernel files only, stamped with ``STAMP``."""
+
+    class Locator(base):
+        def get_source_stamp(self) -> str:
+            return STAMP
+
+        @classmethod
+        def from_function(cls, py_func, py_file):
+            if not os.path.abspath(py_file).startswith(KERNELS + os.sep):
+                return None
+            return super().from_function(py_func, py_file)
+
+    Locator.__name__ = Locator.__qualname__ = f"KernelTree{base.__name__}"
+    return Locator
+
+
+LOCATORS = [
+    _tree_stamped(caching.UserProvidedCacheLocator),  # NUMBA_CACHE_DIR, when set
+    _tree_stamped(caching.InTreeCacheLocator),  # __pycache__ beside the sources
+    _tree_stamped(caching.UserWideCacheLocator),  # the user's cache folder (read-only install)
+]
+
+
+def install() -> None:
+    """Put the kernel-tree locators first in numba's list (once; before any kernel is defined)."""
+    classes = caching.CacheImpl._locator_classes
+    if classes[0] is not LOCATORS[0]:
+        classes[:0] = LOCATORS

@@ -1,0 +1,352 @@
+"""The revolute clearance joint (a journal in a bearing) as a contact element.
+
+Table (``JournalTable``, one row per joint, SI): bodies and laws in ``ints`` (``I_*``),
+centres and parameters in ``params`` (``P_*``). Restart state (``JournalState``): whether a
+contact period is under way, its impact speed, and both surfaces' worn profiles. Logs
+(``JournalLog``): per-joint totals (``T_*``) and the wear snapshots. Scratch
+(``JournalScratch``): the last evaluation of each joint (``C_*``).
+
+Penetration (paper Eq. 15, SPEC secs. 3-4): delta = abs(e) - (c + w_B(theta_B) + w_J(theta_J)),
+the wear depths w read from the sector profiles in each body's frame (``wear.depth_at``). The
+force law is applied for any delta > 0, so the force is continuous; the contact tolerance only
+decides when a contact period begins. Until the loop has recorded the onset of a period, the
+damping uses the current penetration rate as the impact speed, floored at ``min_impact_speed``.
+The rate of penetration is n . de/dt: the slope of the worn profile (wear depths of the order
+of 1e-8 m against a clearance of 1e-4 m) is neglected in it.
+
+Wear (SPEC sec. 4, paper Eq. 14): ``accumulate`` adds the wear of an accepted step to both
+surfaces' sectors from the contact at the step's midpoint times its length (midpoint rule),
+and none while the contact sticks. Reye's law uses the effective friction coefficient
+abs(f_t) / f_n, so that the worn volume follows the friction energy dissipated (paper Eq. 8).
+"""
+
+import math
+from typing import NamedTuple
+
+import numpy as np
+from numba import njit
+
+from ..laws.friction import is_sliding, tangential_force
+from ..laws.normal import hertz, normal_force
+from ..laws.wear import WearLaw, accumulate_wear, depth_at, hertz_line_contact, wear_coefficient
+from .journal_geometry import apply_contact, contact_velocities, eccentricity, surface_angles
+
+# Columns of JournalTable.ints.
+I_BEARING = 0  # bearing body (-1: ground)
+I_JOURNAL = 1  # journal body
+I_NORMAL = 2  # normal law code (laws.normal.NORMAL_LAWS)
+I_FRICTION = 3  # friction law code (laws.friction.FRICTION_LAWS)
+I_WEAR = 4  # wear law code (laws.wear.WEAR_LAWS)
+I_PEAK = 5  # 1: paper-style wear (peak pressure into one sector), 0: Hertz spread
+I_FEEDBACK = 6  # 1: the worn profile feeds back into the penetration
+I_SECTORS = 7  # sectors of each surface
+N_INTS = 8
+
+# Columns of JournalTable.params (SI).
+P_SB_X = 0  # bearing centre in the bearing body's frame [m]
+P_SB_Y = 1
+P_SJ_X = 2  # journal centre in the journal body's frame [m]
+P_SJ_Y = 3
+P_RB = 4  # bearing radius [m]
+P_RJ = 5  # journal radius [m]
+P_C = 6  # radial clearance [m]
+P_K = 7  # contact stiffness K [N/m^n]
+P_EXP = 8  # exponent n [-]
+P_CE = 9  # normal law parameter: restitution coefficient [-]
+P_CF = 10  # friction coefficient [-]
+P_F0 = 11  # friction law parameters p0, p1, p2 (laws.friction)
+P_F1 = 12
+P_F2 = 13
+P_WEAR = 14  # wear law parameter: Archard k [1/Pa], or Reye's shear strength [Pa]
+P_SHARE = 15  # journal's share of the worn volume [-]
+P_WIDTH = 16  # joint width [m]
+P_RSTAR = 17  # relative radius R* [m]
+P_ESTAR = 18  # contact modulus E* [Pa]
+P_MIN_SPEED = 19  # floor of the impact speed [m/s]
+P_TOL = 20  # contact tolerance [m]
+N_PARAMS = 21
+
+# Columns of JournalScratch.contact (the last evaluation).
+C_EX = 0  # eccentricity [m]
+C_EY = 1
+C_DELTA = 2  # penetration [m]
+C_DDOT = 3  # penetration rate [m/s]
+C_VT = 4  # sliding speed [m/s]
+C_FN = 5  # normal force [N]
+C_FT = 6  # friction force [N]
+C_THETA_B = 7  # direction of n in the bearing's frame [rad]
+C_THETA_J = 8  # direction of n in the journal's frame [rad]
+C_ELASTIC = 9  # undamped part K delta^n of the normal force [N]
+C_FX = 10  # contact force on the journal, global [N]
+C_FY = 11
+N_CONTACT = 12
+OUTPUTS = (C_FX, C_FY, C_EX, C_EY, C_DELTA, C_FN, C_FT)  # time-series columns, in order
+OUTPUT_NAMES = ("fx", "fy", "ex", "ey", "delta", "fn", "ft")
+
+# Columns of JournalLog.totals.
+T_CONTACT_TIME = 0  # time with a positive normal force [s]
+T_MAX_FN = 1  # largest normal force [N]
+T_MAX_DELTA = 2  # largest penetration [m]
+T_IMPACTS = 3  # contact periods begun (free flight to contact)
+T_DAMPING_ENERGY = 4  # energy dissipated by the damping of the normal force [J]
+T_FRICTION_ENERGY = 5  # energy dissipated by friction [J]
+T_WORN_VOLUME = 6  # volume removed from both surfaces [m^3]
+T_SLIDING = 7  # sliding distance while in contact and sliding [m]
+N_TOTALS = 8
+
+# Columns of an onset's entry in the impact log.
+IMPACT_SPEED = 0  # penetration rate at onset [m/s]
+IMPACT_THETA_B = 1  # contact angle in the bearing's frame [rad]
+IMPACT_THETA_J = 2  # contact angle in the journal's frame [rad]
+IMPACT_DELTA = 3  # penetration where the onset was located [m]
+N_IMPACT_INFO = 4
+
+DEGREES_OF_FREEDOM = 2  # a clearance joint frees the two components of the eccentricity
+
+
+class JournalTable(NamedTuple):
+    """The clearance joints of a mechanism (fixed for a run)."""
+
+    ints: np.ndarray  # (nc, N_INTS) int64
+    params: np.ndarray  # (nc, N_PARAMS)
+
+
+class JournalState(NamedTuple):
+    """What a restart needs: contact periods and worn profiles."""
+
+    contact_on: np.ndarray  # (nc,) int64, 1 while a contact period lasts
+    impact_speed: np.ndarray  # (nc,) penetration rate at the period's onset [m/s]
+    wear: np.ndarray  # (nc, 2, max sectors) wear depth of bearing (0), journal (1) [m]
+
+
+class JournalLog(NamedTuple):
+    """What a run accumulates: totals and wear snapshots."""
+
+    totals: np.ndarray  # (nc, N_TOTALS)
+    snapshots: np.ndarray  # (snapshots, nc, 2, max sectors) wear at the snapshot times [m]
+
+
+class JournalScratch(NamedTuple):
+    """The last evaluation of each joint."""
+
+    contact: np.ndarray  # (nc, N_CONTACT)
+
+
+def make_journals(
+    ints: np.ndarray, params: np.ndarray, snapshots: int
+) -> tuple[JournalTable, JournalState, JournalLog, JournalScratch]:
+    """Allocate a run's arrays for the joints of ``ints`` and ``params``, unworn (Python)."""
+    nc = ints.shape[0]
+    sectors = int(ints[:, I_SECTORS].max(initial=1))
+    return (
+        JournalTable(ints=ints.astype(np.int64), params=params.astype(np.float64)),
+        JournalState(
+            contact_on=np.zeros(nc, dtype=np.int64),
+            impact_speed=np.zeros(nc),
+            wear=np.zeros((nc, 2, sectors)),
+        ),
+        JournalLog(
+            totals=np.zeros((nc, N_TOTALS)), snapshots=np.zeros((snapshots, nc, 2, sectors))
+        ),
+        JournalScratch(contact=np.zeros((nc, N_CONTACT))),
+    )
+
+
+@njit(cache=True)
+def evaluate(table, state, scratch, k, q, qd):
+    """Geometry and forces of joint k at state (q, q'), into scratch.contact[k]."""
+    law = table.ints[k]
+    p = table.params[k]
+    out = scratch.contact[k]
+    for i in range(N_CONTACT):
+        out[i] = 0.0
+    ib = law[I_BEARING]
+    ij = law[I_JOURNAL]
+    ex, ey, dex, dey = eccentricity(q, qd, ib, p[P_SB_X], p[P_SB_Y], ij, p[P_SJ_X], p[P_SJ_Y])
+    out[C_EX] = ex
+    out[C_EY] = ey
+    e = math.hypot(ex, ey)
+    if e == 0.0:  # journal exactly centred: no direction, no contact
+        out[C_DELTA] = -p[P_C]
+        return
+    nx, ny = ex / e, ey / e
+    theta_b, theta_j = surface_angles(q, ib, ij, nx, ny)
+    gap = p[P_C]
+    if law[I_FEEDBACK]:
+        sectors = law[I_SECTORS]
+        gap += depth_at(theta_b, state.wear[k, 0, :sectors])
+        gap += depth_at(theta_j, state.wear[k, 1, :sectors])
+    delta = e - gap
+    delta_dot, v_t = contact_velocities(qd, ib, ij, nx, ny, dex, dey, p[P_RB], p[P_RJ])
+    out[C_DELTA] = delta
+    out[C_DDOT] = delta_dot
+    out[C_VT] = v_t
+    out[C_THETA_B] = theta_b
+    out[C_THETA_J] = theta_j
+    if delta <= 0.0:
+        return
+    impact_speed = max(delta_dot, p[P_MIN_SPEED])  # until the loop records the onset
+    if state.contact_on[k]:
+        impact_speed = state.impact_speed[k]
+    f_n = normal_force(law[I_NORMAL], delta, delta_dot, impact_speed, p[P_K], p[P_EXP], p[P_CE])
+    f_t = tangential_force(law[I_FRICTION], v_t, f_n, p[P_CF], p[P_F0], p[P_F1], p[P_F2])
+    out[C_FN] = f_n
+    out[C_FT] = f_t
+    out[C_ELASTIC] = hertz(delta, p[P_K], p[P_EXP])
+    out[C_FX] = -f_n * nx - f_t * ny
+    out[C_FY] = -f_n * ny + f_t * nx
+
+
+@njit(cache=True)
+def add_forces(table, state, scratch, q, qd, g):
+    """Evaluate every joint and add its contact forces to g [N, N, N m]."""
+    for k in range(table.ints.shape[0]):
+        evaluate(table, state, scratch, k, q, qd)
+        c = scratch.contact[k]
+        if c[C_FN] == 0.0 and c[C_FT] == 0.0:
+            continue
+        e = math.hypot(c[C_EX], c[C_EY])
+        p = table.params[k]
+        apply_contact(
+            q, g,
+            table.ints[k, I_BEARING], p[P_SB_X], p[P_SB_Y],
+            table.ints[k, I_JOURNAL], p[P_SJ_X], p[P_SJ_Y],
+            c[C_EX] / e, c[C_EY] / e, p[P_RB], p[P_RJ], c[C_FN], c[C_FT],
+        )  # fmt: skip
+
+
+@njit(cache=True)
+def penetration_excess(table, state, scratch, k, q, qd):
+    """Penetration of joint k beyond its contact tolerance at (q, q') [m]."""
+    evaluate(table, state, scratch, k, q, qd)
+    return scratch.contact[k, C_DELTA] - table.params[k, P_TOL]
+
+
+@njit(cache=True)
+def tolerance(table, k):
+    """Contact tolerance of joint k [m]: a period begins past it."""
+    return table.params[k, P_TOL]
+
+
+@njit(cache=True)
+def _track_peaks(totals, c):
+    totals[T_MAX_FN] = max(totals[T_MAX_FN], c[C_FN])
+    totals[T_MAX_DELTA] = max(totals[T_MAX_DELTA], c[C_DELTA])
+
+
+@njit(cache=True)
+def begin_period(table, state, scratch, log, k, q, qd, info):
+    """Open or close joint k's contact period at a step end; True when one opens.
+
+    An opening period records its impact speed, and fills ``info`` (``IMPACT_*``) for the
+    impact log. Also keeps the largest normal force and penetration seen at step ends.
+    """
+    excess = penetration_excess(table, state, scratch, k, q, qd)
+    c = scratch.contact[k]
+    _track_peaks(log.totals[k], c)
+    if state.contact_on[k]:
+        if excess + table.params[k, P_TOL] <= 0.0:
+            state.contact_on[k] = 0
+        return False
+    if excess <= 0.0:
+        return False
+    state.contact_on[k] = 1
+    state.impact_speed[k] = max(c[C_DDOT], table.params[k, P_MIN_SPEED])
+    log.totals[k, T_IMPACTS] += 1.0
+    info[IMPACT_SPEED] = c[C_DDOT]
+    info[IMPACT_THETA_B] = c[C_THETA_B]
+    info[IMPACT_THETA_J] = c[C_THETA_J]
+    info[IMPACT_DELTA] = c[C_DELTA]
+    return True
+
+
+@njit(cache=True)
+def _wear_surfaces(table, state, scratch, k, ds):
+    """Add the wear of sliding distance ds [m] under the last evaluation of joint k.
+
+    Returns the volume removed from both surfaces [m^3].
+    """
+    c = scratch.contact[k]
+    p = table.params[k]
+    law = table.ints[k]
+    f_n = c[C_FN]
+    if law[I_WEAR] == WearLaw.REYE:  # mu: the friction acting, abs(f_t) / f_n
+        coef = wear_coefficient(law[I_WEAR], abs(c[C_FT]) / f_n, p[P_WEAR])
+    else:
+        coef = wear_coefficient(law[I_WEAR], p[P_WEAR], 0.0)
+    b, _ = hertz_line_contact(f_n, p[P_RSTAR], p[P_ESTAR], p[P_WIDTH])
+    peak = law[I_PEAK] == 1
+    sectors = law[I_SECTORS]
+    share = p[P_SHARE]
+    bearing = state.wear[k, 0, :sectors]
+    journal = state.wear[k, 1, :sectors]
+    volume = accumulate_wear(
+        bearing, c[C_THETA_B], p[P_RB], p[P_WIDTH], f_n, b, ds, coef, 1.0 - share, peak
+    )
+    return volume + accumulate_wear(
+        journal, c[C_THETA_J], p[P_RJ], p[P_WIDTH], f_n, b, ds, coef, share, peak
+    )
+
+
+@njit(cache=True)
+def accumulate(table, state, scratch, log, t_old, t_new, q_mid, qd_mid, snap_times, first):
+    """Wear and totals of the step [t_old, t_new] [s] from its midpoint state.
+
+    The wear snapshots due in the step (``snap_times[first:]`` up to t_new) are taken with
+    the step's wear split at them.
+    """
+    h = t_new - t_old
+    for k in range(table.ints.shape[0]):
+        evaluate(table, state, scratch, k, q_mid, qd_mid)
+        c = scratch.contact[k]
+        totals = log.totals[k]
+        sliding_speed = 0.0  # of a contact that wears
+        if c[C_FN] > 0.0:
+            totals[T_CONTACT_TIME] += h
+            _track_peaks(totals, c)
+            totals[T_DAMPING_ENERGY] += (c[C_FN] - c[C_ELASTIC]) * c[C_DDOT] * h
+            totals[T_FRICTION_ENERGY] -= c[C_FT] * c[C_VT] * h
+            p = table.params[k]
+            if is_sliding(table.ints[k, I_FRICTION], c[C_VT], p[P_F0], p[P_F1], p[P_F2]):
+                sliding_speed = abs(c[C_VT])
+                totals[T_SLIDING] += sliding_speed * h
+        t_from = t_old
+        s = first
+        while s < snap_times.shape[0] and snap_times[s] <= t_new:  # split the wear there
+            t_snap = max(snap_times[s], t_from)
+            if sliding_speed > 0.0:
+                ds = sliding_speed * (t_snap - t_from)
+                totals[T_WORN_VOLUME] += _wear_surfaces(table, state, scratch, k, ds)
+            for surface in range(2):
+                for i in range(state.wear.shape[2]):
+                    log.snapshots[s, k, surface, i] = state.wear[k, surface, i]
+            t_from = t_snap
+            s += 1
+        if sliding_speed > 0.0:
+            ds = sliding_speed * (t_new - t_from)
+            totals[T_WORN_VOLUME] += _wear_surfaces(table, state, scratch, k, ds)
+
+
+@njit(cache=True)
+def write_outputs(table, scratch, row, c):
+    """Write each joint's ``OUTPUTS`` from its last evaluation into row from column c.
+
+    Returns the next free column.
+    """
+    for k in range(table.ints.shape[0]):
+        for i in range(len(OUTPUTS)):
+            row[c + i] = scratch.contact[k, OUTPUTS[i]]
+        c += len(OUTPUTS)
+    return c
+
+
+@njit(cache=True)
+def elastic_energy(table, scratch):
+    """Elastic energy K delta^(n+1) / (n+1) stored in the last evaluated contacts [J]."""
+    energy = 0.0
+    for k in range(table.ints.shape[0]):
+        delta = scratch.contact[k, C_DELTA]
+        if delta > 0.0:
+            n = table.params[k, P_EXP]
+            energy += table.params[k, P_K] * delta ** (n + 1.0) / (n + 1.0)
+    return energy
