@@ -19,14 +19,14 @@ from .functions import evaluate
 from .kinematics import angle, angular_velocity, point_position, point_velocity, rotate
 
 
-@njit(cache=True)
+@njit(cache=True, no_cpython_wrapper=True)
 def _add(cq, r, b, k, value):
     """Add value at row r, coordinate k (0 x, 1 y, 2 phi) of body b (skipped for the ground)."""
     if b >= 0:
         cq[r, 3 * b + k] += value
 
 
-@njit(cache=True)
+@njit(cache=True, no_cpython_wrapper=True)
 def _revolute(q, qd, i, j, s, r, phi, cq, gamma):
     aix, aiy = rotate(q, i, s[0, 0], s[0, 1])
     ajx, ajy = rotate(q, j, s[1, 0], s[1, 1])
@@ -48,7 +48,7 @@ def _revolute(q, qd, i, j, s, r, phi, cq, gamma):
     gamma[r + 1] = aiy * wi2 - ajy * wj2
 
 
-@njit(cache=True)
+@njit(cache=True, no_cpython_wrapper=True)
 def line_projection(q, qd, i, j, s, vx, vy, r, phi, cq, gamma):
     """Row r: f = (A_i v) . (r_Pj - r_Pi), the second point projected on a body-i direction v.
 

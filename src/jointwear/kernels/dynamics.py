@@ -62,7 +62,7 @@ def make_dynamics_scratch(n: int, m: int) -> DynamicsScratch:
     )
 
 
-@njit(cache=True)
+@njit(cache=True, no_cpython_wrapper=True)
 def rhs(t, y, problem, ydot):
     """Write y' = (q', q'') into ydot; lambda is left in problem.dyn.lam. False if singular."""
     mech = problem.mech
@@ -102,7 +102,7 @@ def rhs(t, y, problem, ydot):
     return True
 
 
-@njit(cache=True)
+@njit(cache=True, no_cpython_wrapper=True)
 def constraint_norm(dyn):
     """2-norm of Phi from the last evaluation [m, rad]."""
     total = 0.0

@@ -25,7 +25,7 @@ from .kinematics import (
 )
 
 
-@njit(cache=True)
+@njit(cache=True, no_cpython_wrapper=True)
 def _apply(q, g, b, sx, sy, fx, fy):
     """Add force (fx, fy) [N] acting at body point s [m] to g."""
     if b < 0:
@@ -36,14 +36,14 @@ def _apply(q, g, b, sx, sy, fx, fy):
     g[3 * b + 2] += ax * fy - ay * fx
 
 
-@njit(cache=True)
+@njit(cache=True, no_cpython_wrapper=True)
 def _function_value(mech, fn, t):
     if fn < 0:
         return 0.0
     return evaluate(mech.function_kind[fn], mech.function_param[fn], t)[0]
 
 
-@njit(cache=True)
+@njit(cache=True, no_cpython_wrapper=True)
 def _spring_axis(q, mech, e):
     """Unit vector u from point 1 to point 2 of load e, and the length between them [m]."""
     s = mech.force_point[e]
@@ -57,7 +57,7 @@ def _spring_axis(q, mech, e):
     return dx / length, dy / length, length
 
 
-@njit(cache=True)
+@njit(cache=True, no_cpython_wrapper=True)
 def _spring_rate(q, qd, mech, e, ux, uy):
     """Rate of change of the length between the two points of load e [m/s]."""
     s = mech.force_point[e]
@@ -66,7 +66,7 @@ def _spring_rate(q, qd, mech, e, ux, uy):
     return ux * (v2x - v1x) + uy * (v2y - v1y)
 
 
-@njit(cache=True)
+@njit(cache=True, no_cpython_wrapper=True)
 def applied_forces(t, q, qd, mech, g):
     """Fill g [N, N, N m] with gravity and every applied load at time t [s]."""
     nb = mech.mass.shape[0]
@@ -104,7 +104,7 @@ def applied_forces(t, q, qd, mech, g):
                 g[3 * b2 + 2] -= torque
 
 
-@njit(cache=True)
+@njit(cache=True, no_cpython_wrapper=True)
 def potential_energy(q, mech):
     """Gravitational and spring potential energy [J] (zero at the origin / free length)."""
     energy = 0.0

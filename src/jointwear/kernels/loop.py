@@ -89,13 +89,13 @@ class Scratch(NamedTuple):
     event_prev: np.ndarray  # (ne,) user event values at the current time
 
 
-@njit(cache=True)
+@njit(cache=True, no_cpython_wrapper=True)
 def event_value(events, e, y):
     """User event e: the watched coordinate minus its value."""
     return y[3 * events.body[e] + events.coordinate[e]] - events.value[e]
 
 
-@njit(cache=True)
+@njit(cache=True, no_cpython_wrapper=True)
 def _begin_periods(problem, log, t, y):
     """Open or close every slot's contact period at the step end (t [s], y); log onsets."""
     n = problem.mech.inv_mass.shape[0]
@@ -124,7 +124,7 @@ def start(problem, integ, events, log, scratch, t0, y0, h0):
     return ok
 
 
-@njit(cache=True)
+@njit(cache=True, no_cpython_wrapper=True)
 def _excess(problem, slot, y):
     """Penetration of a slot beyond its tolerance at state y [m]."""
     n = problem.mech.inv_mass.shape[0]
@@ -133,7 +133,7 @@ def _excess(problem, slot, y):
     )
 
 
-@njit(cache=True)
+@njit(cache=True, no_cpython_wrapper=True)
 def _crossing(problem, events, integ, scratch, kind, index, t):
     """Value at t [s] of a user event (kind 0), a slot's onset (1) or its separation (2)."""
     if kind == 0:
@@ -146,7 +146,7 @@ def _crossing(problem, events, integ, scratch, kind, index, t):
     return excess
 
 
-@njit(cache=True)
+@njit(cache=True, no_cpython_wrapper=True)
 def _locate(problem, events, integ, scratch, kind, index, ta, ga, tb, gb, g_tol):
     """Crossing time in [ta, tb] [s] by the Illinois method on the step's interpolant.
 
@@ -178,7 +178,7 @@ def _locate(problem, events, integ, scratch, kind, index, ta, ga, tb, gb, g_tol)
     return tb
 
 
-@njit(cache=True)
+@njit(cache=True, no_cpython_wrapper=True)
 def _log_events(problem, events, integ, log, scratch, t_old, t_new, y_new):
     for e in range(scratch.event_prev.shape[0]):
         g0 = scratch.event_prev[e]
@@ -199,7 +199,7 @@ def _log_events(problem, events, integ, log, scratch, t_old, t_new, y_new):
             log.counters[Counter.EVENTS] += 1
 
 
-@njit(cache=True)
+@njit(cache=True, no_cpython_wrapper=True)
 def _contact_cut(problem, events, integ, scratch, t_old, y_old, t_new, y_new):
     """Earliest change of contact inside the step just accepted [s], or t_new if none.
 
@@ -234,7 +234,7 @@ def _contact_cut(problem, events, integ, scratch, t_old, y_old, t_new, y_new):
     return t_first, midpoint_known
 
 
-@njit(cache=True)
+@njit(cache=True, no_cpython_wrapper=True)
 def _write_rows(problem, integ, ctl, log, scratch, out, rows, t):
     """Write the output rows due by time t [s]; return (row count, False if singular)."""
     k = log.counters[Counter.OUTPUT_ROWS]
@@ -248,13 +248,13 @@ def _write_rows(problem, integ, ctl, log, scratch, out, rows, t):
     return rows, True
 
 
-@njit(cache=True)
+@njit(cache=True, no_cpython_wrapper=True)
 def _copy(source, target):
     for i in range(source.shape[0]):
         target[i] = source[i]
 
 
-@njit(cache=True)
+@njit(cache=True, no_cpython_wrapper=True)
 def _after_step(problem, integ, events, ctl, log, scratch, out, rows, h):
     """Contact changes, wear, events and rows of the step just accepted.
 

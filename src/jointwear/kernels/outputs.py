@@ -14,7 +14,7 @@ from .dynamics import constraint_norm, rhs
 from .forces import potential_energy
 
 
-@njit(cache=True)
+@njit(cache=True, no_cpython_wrapper=True)
 def kinetic_energy(qd, mech):
     """Kinetic energy 1/2 q'^T M q' [J]."""
     energy = 0.0
@@ -23,7 +23,7 @@ def kinetic_energy(qd, mech):
     return energy
 
 
-@njit(cache=True)
+@njit(cache=True, no_cpython_wrapper=True)
 def _reaction(dyn, mech, jt, b, k):
     """Component k of the force that joint jt's two constraint rows apply to body b [N]."""
     r0 = mech.joint_row[jt]
@@ -33,7 +33,7 @@ def _reaction(dyn, mech, jt, b, k):
     return force
 
 
-@njit(cache=True)
+@njit(cache=True, no_cpython_wrapper=True)
 def write_row(t, y, problem, ydot, row):
     """Fill one output row for state y at time t [s]. Returns False if the solve failed."""
     ok = rhs(t, y, problem, ydot)

@@ -152,7 +152,7 @@ def make_journals(
     )
 
 
-@njit(cache=True)
+@njit(cache=True, no_cpython_wrapper=True)
 def evaluate(table, state, scratch, k, q, qd):
     """Geometry and forces of joint k at state (q, q'), into scratch.contact[k]."""
     law = table.ints[k]
@@ -197,7 +197,7 @@ def evaluate(table, state, scratch, k, q, qd):
     out[C_FY] = -f_n * ny + f_t * nx
 
 
-@njit(cache=True)
+@njit(cache=True, no_cpython_wrapper=True)
 def add_forces(table, state, scratch, q, qd, g):
     """Evaluate every joint and add its contact forces to g [N, N, N m]."""
     for k in range(table.ints.shape[0]):
@@ -215,26 +215,26 @@ def add_forces(table, state, scratch, q, qd, g):
         )  # fmt: skip
 
 
-@njit(cache=True)
+@njit(cache=True, no_cpython_wrapper=True)
 def penetration_excess(table, state, scratch, k, q, qd):
     """Penetration of joint k beyond its contact tolerance at (q, q') [m]."""
     evaluate(table, state, scratch, k, q, qd)
     return scratch.contact[k, C_DELTA] - table.params[k, P_TOL]
 
 
-@njit(cache=True)
+@njit(cache=True, no_cpython_wrapper=True)
 def tolerance(table, k):
     """Contact tolerance of joint k [m]: a period begins past it."""
     return table.params[k, P_TOL]
 
 
-@njit(cache=True)
+@njit(cache=True, no_cpython_wrapper=True)
 def _track_peaks(totals, c):
     totals[T_MAX_FN] = max(totals[T_MAX_FN], c[C_FN])
     totals[T_MAX_DELTA] = max(totals[T_MAX_DELTA], c[C_DELTA])
 
 
-@njit(cache=True)
+@njit(cache=True, no_cpython_wrapper=True)
 def begin_period(table, state, scratch, log, k, q, qd, info):
     """Open or close joint k's contact period at a step end; True when one opens.
 
@@ -260,7 +260,7 @@ def begin_period(table, state, scratch, log, k, q, qd, info):
     return True
 
 
-@njit(cache=True)
+@njit(cache=True, no_cpython_wrapper=True)
 def _wear_surfaces(table, state, scratch, k, ds):
     """Add the wear of sliding distance ds [m] under the last evaluation of joint k.
 
@@ -288,7 +288,7 @@ def _wear_surfaces(table, state, scratch, k, ds):
     )
 
 
-@njit(cache=True)
+@njit(cache=True, no_cpython_wrapper=True)
 def accumulate(table, state, scratch, log, t_old, t_new, q_mid, qd_mid, snap_times, first):
     """Wear and totals of the step [t_old, t_new] [s] from its midpoint state.
 
@@ -327,7 +327,7 @@ def accumulate(table, state, scratch, log, t_old, t_new, q_mid, qd_mid, snap_tim
             totals[T_WORN_VOLUME] += _wear_surfaces(table, state, scratch, k, ds)
 
 
-@njit(cache=True)
+@njit(cache=True, no_cpython_wrapper=True)
 def write_outputs(table, scratch, row, c):
     """Write each joint's ``OUTPUTS`` from its last evaluation into row from column c.
 
@@ -340,7 +340,7 @@ def write_outputs(table, scratch, row, c):
     return c
 
 
-@njit(cache=True)
+@njit(cache=True, no_cpython_wrapper=True)
 def elastic_energy(table, scratch):
     """Elastic energy K delta^(n+1) / (n+1) stored in the last evaluated contacts [J]."""
     energy = 0.0

@@ -54,7 +54,7 @@ REJECTED = 1
 ABM_RESTART_FRACTION = 0.25  # first Adams step after an onset, of the step cut there (order 1)
 
 
-@njit(cache=True)
+@njit(cache=True, no_cpython_wrapper=True)
 def _forced(h, err, ctl, counters):
     """Whether a failed error test is accepted anyway because h is at the minimum step."""
     if h <= ctl.min_step * (1.0 + 1e-12) and err <= 1e300:
@@ -63,7 +63,7 @@ def _forced(h, err, ctl, counters):
     return False
 
 
-@njit(cache=True)
+@njit(cache=True, no_cpython_wrapper=True)
 def _rk_attempt(st, problem, ctl, counters, t_stop):
     h = rk_begin(st, ctl.max_step, ctl.min_step, t_stop)
     min_step = h <= ctl.min_step * (1.0 + 1e-12)
@@ -85,7 +85,7 @@ def _rk_attempt(st, problem, ctl, counters, t_stop):
     return REJECTED
 
 
-@njit(cache=True)
+@njit(cache=True, no_cpython_wrapper=True)
 def _abm_attempt(st, problem, ctl, counters, t_stop):
     t_new = abm_predict(st, ctl.max_step, ctl.min_step, t_stop, st.p)
     h = st.scal[S_H]
@@ -109,32 +109,32 @@ def _abm_attempt(st, problem, ctl, counters, t_stop):
     return REJECTED
 
 
-@njit(cache=True)
+@njit(cache=True, no_cpython_wrapper=True)
 def _rk_restart(st, t, y, f0, h_last, h_min):
     rk_start(st, t, y, f0, h_last)
 
 
-@njit(cache=True)
+@njit(cache=True, no_cpython_wrapper=True)
 def _abm_restart(st, t, y, f0, h_last, h_min):
     abm_start(st, t, y, f0, max(ABM_RESTART_FRACTION * h_last, h_min))
 
 
-@njit(cache=True)
+@njit(cache=True, no_cpython_wrapper=True)
 def _rk_step_start(st):
     return st.scal[S_TOLD], st.y_old
 
 
-@njit(cache=True)
+@njit(cache=True, no_cpython_wrapper=True)
 def _abm_step_start(st):
     return st.scal[S_T] - st.scal[S_HOLD], st.y_old
 
 
-@njit(cache=True)
+@njit(cache=True, no_cpython_wrapper=True)
 def _time(st):
     return st.scal[S_T]  # the same slot in both methods
 
 
-@njit(cache=True)
+@njit(cache=True, no_cpython_wrapper=True)
 def _state(st):
     return st.y
 
