@@ -408,6 +408,7 @@ V_SLIDE = OMEGA_WHEEL * R_B  # 0.2 pi = 0.6283 m/s
 SHARE, SECTORS = 0.4, 36  # journal's share of the volume (not the default 1/2, to see it)
 SECTOR = 2.0 * math.pi / SECTORS
 T_WHEEL, SNAP = 0.2, 0.1  # [s]
+WHEEL_STEP = 1e-4  # max_step [s]: 0.36 deg of turn
 # Along the force: critical for the contact's stiffness at F, 1.5 K delta^0.5 (3.4e8 N/m);
 # across it: critical for the journal sliding on the curved wall, stiffness F / c (5e6 N/m).
 DELTA_WHEEL = (WHEEL_FORCE / K_TABLE2) ** (2.0 / 3.0)  # 4.4604e-6 m
@@ -420,7 +421,9 @@ def wheel_model(friction: float, **keys) -> dict:
     # back by the friction angle. (The bearing gets -(-F_N n + F_T t), F_T = c_f F_N for v_t < 0.)
     direction = NORMAL + 180.0 - math.degrees(math.atan(friction))
     u, w = unit(direction), unit(direction + 90.0)
+    # Steps capped at WHEEL_STEP, so the spreading's error bound (check_bearing_turn) holds.
     solver = {"rtol": 1e-9, "atol": 1e-13, "t_end": T_WHEEL, "output_interval": 1e-3}
+    solver["max_step"] = WHEEL_STEP
     solver.update(keys.pop("solver", {}))
     joint = clearance(
         restitution_coefficient=0.9,
@@ -505,9 +508,10 @@ def check_bearing_turn(increments: np.ndarray, volume: float) -> None:
     # The volume itself is exact: the spreading conserves it and the load is constant
     # (measured 4e-13 relative); 1e-9.
     assert increments.mean() == pytest.approx(even, rel=1e-9)
-    # Each step puts its patch at the angle of the step's midpoint: with steps of ~0.3 deg of
-    # turn (9e-5 s) against a patch of +-3 deg, a sector's share is off by about
-    # (0.3 / 3)^2 / 24 = 4e-4 either way (measured up to 2.9e-4); 1e-3.
+    # Each step puts its patch at the angle of the step's midpoint: with steps of at most
+    # 0.36 deg of turn (WHEEL_STEP) against a patch of +-3 deg, a sector's share is off by at
+    # most about (0.36 / 3)^2 / 24 = 6e-4 either way (measured up to 1.3e-4); 1e-3. (Uncapped,
+    # the integrator took one 1.6 deg step here, and that sector was off by 1.3e-3.)
     np.testing.assert_allclose(increments, even, rtol=1e-3)
 
 
