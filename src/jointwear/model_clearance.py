@@ -65,6 +65,8 @@ def law_parameters(clearance: "Clearance") -> dict[str, PackedLaw]:
         values = {key.name: getattr(clearance, key.name) for key in law.keys}
         packed[family] = PackedLaw(law.code, law.pack(values))
     return packed
+
+
 HERTZ_EXPONENT = 1.5  # the exponent the internal-cylinder stiffness formula is for
 
 

@@ -214,9 +214,7 @@ def _contact_cut(problem, events, integ, scratch, t_old, y_old, t_new, y_new):
         if not elements.in_contact(problem.state, slot):
             if g1 > 0.0:
                 g0 = min(_excess(problem, slot, y_old), 0.0)  # periods open above tol
-                t_hit = _locate(
-                    problem, events, integ, scratch, 1, slot, t_old, g0, t_new, g1, tol
-                )
+                t_hit = _locate(problem, events, integ, scratch, 1, slot, t_old, g0, t_new, g1, tol)
                 t_first = min(t_first, t_hit)
             continue
         if g1 + tol <= 0.0:

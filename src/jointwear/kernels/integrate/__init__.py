@@ -159,7 +159,6 @@ _METHODS = {
 }
 
 
-
 def _implementation(name):
     """The overload of interface function ``name``: the method module's, by state type."""
 
