@@ -6,12 +6,12 @@ systems", Mechanism and Machine Theory 44 (2009) 1211-1222.
 
 __version__ = "0.1.0"
 
-from .lifetime import LifeResults, life
 from .model import Model, ModelError, load_model
 from .results import Results, load_results
 from .run import run
 from .simulate import simulate
-from .sweep import sweep
+from .studies.life.study import LifeResults, life
+from .studies.sweep.study import sweep
 
 __all__ = [
     "LifeResults",

@@ -19,15 +19,15 @@ from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn, Ti
 from rich.table import Table
 
 from .assembly import assemble
-from .lifetime import life as run_life
 from .model import ModelError, load_model
-from .model_clearance import Clearance
+from .model.clearance import Clearance
 from .results import load_results
 from .run import IDEAL_FOLDER
 from .run import run as run_model
-from .sweep import CaseReport
-from .sweep import sweep as run_sweep
-from .sweep_cases import make_plan
+from .studies.life.study import life as run_life
+from .studies.sweep.cases import make_plan
+from .studies.sweep.study import CaseReport
+from .studies.sweep.study import sweep as run_sweep
 from .system import build_system
 
 app = typer.Typer(add_completion=False, no_args_is_help=True, help=__doc__.splitlines()[0])
@@ -230,7 +230,7 @@ def plot(
     if not (folder / "summary.json").is_file():
         err.print(f"{folder}: not a results folder (no summary.json)", markup=False, soft_wrap=True)
         raise typer.Exit(code=2)
-    from .figures import save_figures  # matplotlib only for this command
+    from .figures.folder import save_figures  # matplotlib only for this command
 
     companion = folder / IDEAL_FOLDER
     ideal = load_results(companion) if (companion / "summary.json").is_file() else None

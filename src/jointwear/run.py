@@ -64,7 +64,7 @@ def run(
         if companion is not None:
             companion.save(folder / IDEAL_FOLDER)
         if figures and len(results.timeseries) > 1:
-            from .figures import save_figures  # matplotlib only when figures are wanted
+            from .figures.folder import save_figures  # matplotlib only when figures are wanted
 
             save_figures(results, folder / "figures", ideal=companion)
     return results

@@ -16,14 +16,6 @@ import pandas as pd
 
 from . import __version__
 from .assembly import assemble
-from .clearance_results import (
-    IMPACT_COLUMNS,
-    clearance_joint_names,
-    impact_rows,
-    joint_summaries,
-    snapshot_table,
-    wear_table,
-)
 from .interrupts import stop_requests
 from .kernels import loop
 from .kernels.abm import make_abm_state
@@ -31,8 +23,17 @@ from .kernels.codes import N_COUNTERS, Counter, Status
 from .kernels.contact_steps import N_IMPACT_INFO, N_TOTALS
 from .kernels.dopri5 import make_dopri5_state
 from .model import Model
-from .results import Results, status_message
-from .run_state import RunState
+from .results import Results
+from .results.clearance import (
+    IMPACT_COLUMNS,
+    clearance_joint_names,
+    impact_rows,
+    joint_summaries,
+    snapshot_table,
+    wear_table,
+)
+from .results.run_results import status_message
+from .results.run_state import RunState
 from .system import System, build_system, column_names, make_work
 
 CHUNK_WALL_S = 0.2  # target wall time of one compiled chunk [s]

@@ -16,7 +16,7 @@ from .kernels import joint_contact as jc
 from .kernels.codes import DriverKind, EventDirection, FunctionKind
 from .kernels.joint_contact import N_CONTACT, N_LAW, N_PARAM
 from .model import Model
-from .model_clearance import (
+from .model.clearance import (
     FRICTION_LAWS,
     NORMAL_LAWS,
     WEAR_DISTRIBUTIONS,

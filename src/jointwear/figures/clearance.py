@@ -16,10 +16,10 @@ from matplotlib import colormaps
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure  # figures without pyplot: no global backend switch
 
-from .clearance_results import UM
-from .model import RevoluteJoint
-from .plots import crank_driver
-from .results import Results
+from ..model.schema import RevoluteJoint
+from ..results import Results
+from ..results.clearance import UM
+from .run import crank_driver
 
 PROFILE_SHARE = 0.15  # Fig. 10: the largest wear depth is drawn as this share of the radius
 STILL_ANGLE = 1e-6  # [rad] a body whose angle spans less does not rotate (a slider)

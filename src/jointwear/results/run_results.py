@@ -4,7 +4,7 @@ A results folder holds ``summary.json`` (status, settings, version, run statisti
 per clearance joint its contact and wear figures), ``timeseries.csv`` and
 ``timeseries.parquet`` (the same table), ``events.csv`` and ``model.json`` (the resolved
 model, SI), so that it describes itself; with clearance joints also ``wear.csv`` (final
-profiles), ``wear_snapshots.csv`` and ``impacts.csv`` (``clearance_results``).
+profiles), ``wear_snapshots.csv`` and ``impacts.csv`` (``results.clearance``).
 ``load_results`` reads it back.
 """
 
@@ -20,8 +20,8 @@ import pandas as pd
 import pyarrow as pa
 from pyarrow import csv
 
-from .kernels.codes import Status
-from .model import Model, parse_model
+from ..kernels.codes import Status
+from ..model import Model, parse_model
 from .run_state import RunState
 
 _MESSAGES = {

@@ -19,10 +19,11 @@ import numpy as np
 import pandas as pd
 from numpy.typing import NDArray
 
-from . import __version__
-from .clearance_results import SURFACES, wear_table
-from .model import Model, RevoluteJoint
-from .results import Results
+from ... import __version__
+from ...model import Model
+from ...model.schema import RevoluteJoint
+from ...results import Results
+from ...results.clearance import SURFACES, wear_table
 
 GRID_CELLS = 2**20  # evaluations per block of the clearance-growth search
 GROWTH_MARK = 0.5  # the summary reports the cycles at which the growth reached this share of c

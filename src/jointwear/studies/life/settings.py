@@ -12,15 +12,16 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from .model import ConstantSpeed, Harmonic, Model, ModelError, Polynomial
-from .units import to_si
+from ...model import Model, ModelError
+from ...model.schema import ConstantSpeed, Harmonic, Polynomial
+from ...units import to_si
 
 PERIOD_RTOL = 1e-9  # periods whose ratio is this close to a whole number divide each other
 
 
 @dataclass(frozen=True)
 class LifeSettings:
-    """How a life run extrapolates (``lifetime.life`` documents each setting)."""
+    """How a life run extrapolates (``life`` documents each setting)."""
 
     cycles: int
     settle_cycles: int = 2

@@ -19,16 +19,16 @@ from pathlib import Path
 
 import pandas as pd
 
-from .clearance_results import WEAR_COLUMNS
-from .model import ModelError
-from .run_state import RunState, load_run_state
+from ...model import ModelError
+from ...results.clearance import WEAR_COLUMNS
+from ...results.run_state import RunState, load_run_state
 
 TABLE = "life.csv"
 PROFILES = "profiles.csv"
 SUMMARY = "summary.json"
 MODEL = "model.json"
 FIGURES = "figures"
-FIGURE_FILES = ("life_wear.png", "life_profiles.png")  # what lifetime_plots writes there
+FIGURE_FILES = ("life_wear.png", "life_profiles.png")  # what figures.life writes there
 CHECKPOINTS = "checkpoint"
 CHECKPOINT = "checkpoint.json"
 PROFILE_COLUMNS = ["update", "cycles", *WEAR_COLUMNS]

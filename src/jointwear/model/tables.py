@@ -5,7 +5,7 @@ from typing import Annotated
 
 from pydantic import AfterValidator, AllowInfNan, BaseModel, ConfigDict, Strict, model_validator
 
-from jointwear.model_errors import did_you_mean, unknown
+from .errors import did_you_mean, unknown
 
 
 def one_of(table: dict[str, object], what: str) -> AfterValidator:

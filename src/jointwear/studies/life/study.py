@@ -26,7 +26,7 @@ A cycle is the period of the model's drivers (an angle driver at constant speed:
 speed; a harmonic function: 2 pi / angular frequency). The run stops early, with its status
 and a message, if a simulated run fails or is interrupted (Ctrl-C, SIGTERM: the update in
 progress is lost, nothing else), if a journal would be worn through, or if a joint's
-effective clearance (``lifetime_records``) would grow by more than ``max_growth`` times its
+effective clearance (``records``) would grow by more than ``max_growth`` times its
 nominal clearance (default 1: doubled): the contact stiffness and the Hertz patch are
 computed from the nominal radii, and the worn profile enters the contact only as a radial
 depth (its slope neglected), so well past the nominal clearance the model no longer
@@ -42,13 +42,13 @@ from pathlib import Path
 
 import pandas as pd
 
-from . import lifetime_files as files
-from .interrupts import stop_requests
-from .lifetime_records import life_summary, table_columns
-from .lifetime_settings import LifeSettings, cycle_driver, with_feedback
-from .lifetime_update import RESUME, LifeRun
-from .model import ModelError, load_model
-from .run_state import RunState
+from ...interrupts import stop_requests
+from ...model import ModelError, load_model
+from ...results.run_state import RunState
+from . import files
+from .records import life_summary, table_columns
+from .settings import LifeSettings, cycle_driver, with_feedback
+from .update import RESUME, LifeRun
 
 LifeProgress = Callable[[int, int], None]  # (cycles done, cycles asked for)
 
@@ -60,7 +60,7 @@ class LifeResults:
     Attributes
     ----------
     table
-        life.csv: one row per update (``lifetime_records.table_columns``).
+        life.csv: one row per update (``records.table_columns``).
     profiles
         profiles.csv: the wear profiles after every update.
     summary
@@ -204,7 +204,7 @@ def life(
         summary = life_summary(model, table, wear, outcome)
         files.write_summary(folder, summary)
         if figures and len(table):
-            from .lifetime_plots import save_life_figures  # matplotlib only when asked for
+            from ...figures.life import save_life_figures  # matplotlib only when asked for
 
             save_life_figures(model, driver, table, profiles, folder / files.FIGURES)
     return LifeResults(table, profiles, summary, point.state)

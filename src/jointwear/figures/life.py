@@ -15,10 +15,10 @@ import pandas as pd
 from matplotlib import colormaps
 from matplotlib.figure import Figure  # figures without pyplot: no global backend switch
 
-from .clearance_results import UM
-from .lifetime_files import FIGURE_FILES
-from .lifetime_records import GROWTH_MARK, cycles_at, driver_columns
-from .model import Model
+from ..model import Model
+from ..results.clearance import UM
+from ..studies.life.files import FIGURE_FILES
+from ..studies.life.records import GROWTH_MARK, cycles_at, driver_columns
 
 PROFILE_COUNTS = 5  # profiles drawn: at about 1/5, 2/5, ... of the cycles reached
 PLOT_ORDER = ("journal", "bearing")  # the journal first, as in the paper's Figs. 8-10

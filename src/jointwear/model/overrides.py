@@ -4,7 +4,7 @@ import copy
 import tomllib
 from collections.abc import Iterable
 
-from jointwear.model_errors import ModelError, did_you_mean
+from .errors import ModelError, did_you_mean
 
 
 def apply_overrides(data: dict, overrides: Iterable[str]) -> dict:

@@ -11,15 +11,15 @@ from typing import Annotated
 from annotated_types import Ge, Gt, Le
 from pydantic import BeforeValidator, model_validator
 
-from jointwear.kernels.codes import FrictionLaw, NormalLaw, WearLaw
-from jointwear.kernels.contact import (
+from ..kernels.codes import FrictionLaw, NormalLaw, WearLaw
+from ..kernels.contact import (
     effective_modulus,
     effective_radius,
     internal_cylinder_stiffness,
 )
-from jointwear.kernels.wear import hertz_line_contact
-from jointwear.model_tables import Number, Table, one_of
-from jointwear.units import Length, Pressure, Speed, WearCoefficient
+from ..kernels.wear import hertz_line_contact
+from ..units import Length, Pressure, Speed, WearCoefficient
+from .tables import Number, Table, one_of
 
 NORMAL_LAWS = {law.name.lower(): law for law in NormalLaw}
 FRICTION_LAWS = {law.name.lower(): law for law in FrictionLaw}

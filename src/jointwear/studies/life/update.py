@@ -1,7 +1,7 @@
 """One update of a long-life wear run: simulate, measure, extrapolate, record.
 
-``lifetime.life`` describes the method; ``LifeRun.update`` carries out one step of it and
-writes its row, profiles and checkpoint (``lifetime_files``).
+``study.life`` describes the method; ``LifeRun.update`` carries out one step of it and
+writes its row, profiles and checkpoint (``files``).
 """
 
 from __future__ import annotations
@@ -13,19 +13,19 @@ from pathlib import Path
 import numpy as np
 from numpy.typing import NDArray
 
-from . import lifetime_files as files
-from .clearance_results import UM
-from .lifetime_records import (
+from ...model import Model
+from ...results import Results
+from ...results.clearance import UM
+from ...results.run_state import RunState
+from ...simulate import simulate
+from . import files
+from .records import (
     clearance_growths,
     profile_rows,
     relative_angle_range,
     update_row,
 )
-from .lifetime_settings import LifeSettings
-from .model import Model
-from .results import Results
-from .run_state import RunState
-from .simulate import simulate
+from .settings import LifeSettings
 
 RESUME = "; --resume (resume=True) goes on from there"
 
@@ -219,7 +219,7 @@ class LifeRun:
     def _past_limit(
         self, wear: NDArray[np.float64], growth: NDArray[np.float64], before: int, after: int
     ) -> bool:
-        """Stop if profiles ``wear`` pass a limit (``lifetime.life``); True if so."""
+        """Stop if profiles ``wear`` pass a limit (``study.life``); True if so."""
         for k, joint in enumerate(self.model.clearance_joints):
             c = joint.clearance
             journal = wear[k, 1, : c.sectors].max()

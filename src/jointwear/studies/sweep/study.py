@@ -27,11 +27,11 @@ from pathlib import Path
 
 import pandas as pd
 
-from .interrupts import stop_requests
-from .model import Model, ModelError, load_model
-from .run import _check_folder
-from .sweep_cases import Case, check_vary, make_cases, si_value, value_text
-from .sweep_runners import CaseTask, Outcome, read_record, run_dask, run_local, run_serial
+from ...interrupts import stop_requests
+from ...model import Model, ModelError, load_model
+from ...run import _check_folder
+from .cases import Case, check_vary, make_cases, si_value, value_text
+from .runners import CaseTask, Outcome, read_record, run_dask, run_local, run_serial
 
 CASES_FOLDER = "cases"
 FIXED_COLUMNS = ("case", "status", "error", "wall_s")  # the varied paths follow "case"
@@ -97,7 +97,7 @@ def sweep(
         ``dotted.path=value`` settings common to every case.
     cycles
         None: each case is a normal run (no figures, no ideal companion). A number: each case
-        is a long-life wear run of that many cycles (``jointwear.lifetime.life``).
+        is a long-life wear run of that many cycles (``jointwear.life``).
     scheduler
         Address of a Dask distributed scheduler to run the cases on (workers must see
         ``model_path`` and ``out`` at the same paths); None: local processes.
@@ -151,7 +151,7 @@ def sweep(
         _write_table(table, folder)
         drawn = []
         if figures:
-            from .sweep_plots import save_sweep_figures  # matplotlib only when drawing
+            from ...figures.sweep import save_sweep_figures  # matplotlib only when drawing
 
             given = {  # per varied path, its table values as the sweep was given them
                 path: dict(zip(table[path], [c.values[path] for c in cases], strict=True))

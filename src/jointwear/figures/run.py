@@ -12,7 +12,7 @@ import numpy as np
 import pandas as pd
 from matplotlib.figure import Figure  # figures without pyplot: no global backend switch
 
-from .results import Results
+from ..results import Results
 
 CRANK_FUNCTIONS = ("constant_speed",)  # driver functions that turn a crank
 

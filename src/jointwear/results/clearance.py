@@ -17,8 +17,8 @@ import numpy as np
 import pandas as pd
 from numpy.typing import NDArray
 
-from .kernels import contact_steps as cs
-from .model import Model
+from ..kernels import contact_steps as cs
+from ..model import Model
 
 SURFACES = ("bearing", "journal")
 UM = 1e6  # micrometres per metre, for messages and figures

@@ -14,9 +14,9 @@ from typing import TYPE_CHECKING
 from pydantic import ValidationError
 
 if TYPE_CHECKING:
-    from jointwear.model import Model
+    from . import Model
 
-# Tag of the plain-quantity member in the "quantity or function table" unions of model.py.
+# Tag of the plain-quantity member in the "quantity or function table" unions of the schema.
 SCALAR_TAG = "quantity"
 
 

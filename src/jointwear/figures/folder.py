@@ -4,10 +4,10 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from ..results import Results
 from .animation import save_animation
-from .plots import crank_driver, plot_cycle, plot_energy
-from .plots_clearance import CLEARANCE_FIGURES, save_clearance_figures
-from .results import Results
+from .clearance import CLEARANCE_FIGURES, save_clearance_figures
+from .run import crank_driver, plot_cycle, plot_energy
 
 ANIMATION = "mechanism.gif"
 ALL_FIGURES = {"energy.png", "cycle.png", *(f"{n}.png" for n in CLEARANCE_FIGURES), ANIMATION}

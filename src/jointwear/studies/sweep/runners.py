@@ -23,7 +23,7 @@ from contextlib import suppress
 from dataclasses import dataclass
 from pathlib import Path
 
-from .model_errors import ModelError
+from ...model.errors import ModelError
 
 CASE_FILE = "case.json"  # in each case folder: its settings and outcome, written last
 POLL_S = 0.3  # how often a runner looks at the stop flag while cases run [s]
@@ -97,13 +97,13 @@ def run_case(task: CaseTask) -> Outcome:
 
 def _simulate(task: CaseTask) -> dict:
     if task.cycles is None:
-        from .run import run
+        from ...run import run
 
         results = run(
             task.model_path, task.folder, overrides=task.overrides, figures=False, ideal=False
         )
         return results.summary
-    from .lifetime import life  # long-life wear runs; imported only when asked for
+    from ..life.study import life  # long-life wear runs; imported only when asked for
 
     return life(task.model_path, task.folder, cycles=task.cycles, overrides=task.overrides).summary
 

@@ -26,17 +26,8 @@ from pydantic import (
     model_validator,
 )
 
-from jointwear.kernels.codes import DriverKind, ForceKind, FunctionKind, JointKind, Method
-from jointwear.model_clearance import Clearance
-from jointwear.model_errors import (
-    SCALAR_TAG,
-    ModelError,
-    from_validation_error,
-    reference_problems,
-)
-from jointwear.model_overrides import apply_overrides
-from jointwear.model_tables import Name, Number, Table, one_of
-from jointwear.units import (
+from ..kernels.codes import DriverKind, ForceKind, FunctionKind, JointKind, Method
+from ..units import (
     Acceleration2,
     Angle,
     AngularSpeed,
@@ -55,6 +46,15 @@ from jointwear.units import (
     Velocity2,
     to_si,
 )
+from .clearance import Clearance
+from .errors import (
+    SCALAR_TAG,
+    ModelError,
+    from_validation_error,
+    reference_problems,
+)
+from .overrides import apply_overrides
+from .tables import Name, Number, Table, one_of
 
 INTEGRATORS: dict[str, Method] = {"dopri5": Method.DOPRI5, "abm": Method.ABM}
 MAX_OUTPUT_ROWS = 5e7  # about 16 GB of time series for a small mechanism

@@ -20,8 +20,8 @@ from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
-from .model import Model
-from .model_errors import ModelError, did_you_mean
+from ...model import Model
+from ...model.errors import ModelError, did_you_mean
 
 VARY_EXAMPLE = "joints.coupler_follower.clearance.friction_coefficient=0.05,0.1"
 SWEEP_FILE_KEYS = ("vary", "set")

@@ -20,9 +20,9 @@ from matplotlib.figure import Figure  # figures without pyplot: no global backen
 from matplotlib.patches import Circle
 from PIL import Image
 
-from .model import Model
-from .plots import crank_driver
-from .results import Results
+from ..model import Model
+from ..results import Results
+from .run import crank_driver
 
 NO_CRANK_SPAN = 0.04  # [s] the time animated when no constant-speed driver turns a crank
 CLEARANCE_SHARE = 0.04  # default: a radial clearance is drawn as this share of the mechanism
