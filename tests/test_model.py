@@ -12,8 +12,8 @@ from hypothesis import strategies as st
 
 from jointwear.kernels.codes import JointKind, Method
 from jointwear.model import Model, ModelError, load_model, parse_model
+from jointwear.model.functions import Harmonic
 from jointwear.model.overrides import apply_overrides
-from jointwear.model.schema import Harmonic
 from jointwear.units import to_si
 
 PENDULUM_TOML = """\

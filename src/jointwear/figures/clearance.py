@@ -16,7 +16,7 @@ from matplotlib import colormaps
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure  # figures without pyplot: no global backend switch
 
-from ..model.schema import RevoluteJoint
+from ..model.sections import RevoluteJoint
 from ..results import Results
 from ..results.clearance import UM
 from .run import crank_driver

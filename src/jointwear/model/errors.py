@@ -9,12 +9,8 @@ mean 'coupler'?)``.
 import difflib
 import re
 from collections.abc import Iterable, Sequence
-from typing import TYPE_CHECKING
 
 from pydantic import ValidationError
-
-if TYPE_CHECKING:
-    from . import Model
 
 # Tag of the plain-quantity member in the "quantity or function table" unions of the schema.
 SCALAR_TAG = "quantity"
@@ -115,82 +111,3 @@ def toml_path(data: object, loc: Sequence[str | int]) -> str:
 def _show(value: object, width: int = 60) -> str:
     text = repr(value)
     return text if len(text) <= width else text[: width - 3] + "..."
-
-
-def reference_problems(model: "Model") -> list[str]:
-    """Check a schema-valid model's names: unique, and everything referred to exists.
-
-    Parameters
-    ----------
-    model
-        A model whose tables are each valid (called while it is being validated).
-
-    Returns
-    -------
-    list of str
-        One line per problem, empty if the names are consistent.
-    """
-    problems: list[str] = []
-    for section in ("bodies", "joints", "drivers", "forces", "events"):
-        first: dict[str, int] = {}
-        for i, item in enumerate(getattr(model, section)):
-            if item.name in first:
-                problems.append(
-                    f"{section}[{i}].name: duplicate name {item.name!r}; "
-                    f"{section}[{first[item.name]}] has it already"
-                )
-            elif item.name is not None:
-                first[item.name] = i
-
-    points = {"ground": model.ground.points} | {body.name: body.points for body in model.bodies}
-    moving = list(dict.fromkeys(model.body_names))
-
-    def body(path: str, name: str, ground: bool = True) -> bool:
-        known = ["ground", *moving] if ground else moving
-        if name not in known:
-            problems.append(f"{path}: {unknown('body', name, known, 'bodies')}")
-        return name in known
-
-    def point(path: str, body_name: str, name: str) -> None:
-        known = list(points[body_name])
-        if name not in known:
-            problems.append(f"{path}: {unknown('point', name, known, f'points of {body_name!r}')}")
-
-    def pair(path: str, table, with_points: bool) -> None:
-        found = [body(f"{path}.bodies[{k}]", name) for k, name in enumerate(table.bodies)]
-        if table.bodies[0] == table.bodies[1]:
-            problems.append(f"{path}.bodies: both are {table.bodies[0]!r}; give two bodies")
-        for k in range(2 if with_points and all(found) else 0):
-            point(f"{path}.points[{k}]", table.bodies[k], table.points[k])
-
-    for i, joint in enumerate(model.joints):
-        pair(f"joints[{i}]", joint, with_points=True)
-    kinds = {joint.name: joint.type for joint in model.joints}
-    sliders = [name for name, kind in kinds.items() if kind == "translational"]
-    for i, driver in enumerate(model.drivers):
-        path = f"drivers[{i}]"
-        if driver.type == "angle":
-            body(f"{path}.body", driver.body, ground=False)
-            body(f"{path}.relative_to", driver.relative_to)
-            if driver.body == driver.relative_to:
-                problems.append(f"{path}.relative_to: is the driven body; give another body")
-        elif driver.joint not in kinds:
-            problems.append(
-                f"{path}.joint: {unknown('joint', driver.joint, list(kinds), 'joints')}"
-            )
-        elif driver.joint not in sliders:
-            problems.append(
-                f"{path}.joint: {driver.joint!r} is {kinds[driver.joint]}; a distance driver "
-                f"needs a translational joint ({', '.join(sliders) or 'there are none'})"
-            )
-    for i, force in enumerate(model.forces):
-        path = f"forces[{i}]"
-        if force.type == "point_force" and body(f"{path}.body", force.body, ground=False):
-            point(f"{path}.point", force.body, force.point)
-        elif force.type == "torque":
-            body(f"{path}.body", force.body, ground=False)
-        elif force.type in ("spring_damper", "rotational_spring_damper"):
-            pair(path, force, with_points=force.type == "spring_damper")
-    for i, event in enumerate(model.events):
-        body(f"events[{i}].body", event.body, ground=False)
-    return problems

@@ -21,7 +21,7 @@ from numpy.typing import NDArray
 
 from ... import __version__
 from ...model import Model
-from ...model.schema import RevoluteJoint
+from ...model.sections import RevoluteJoint
 from ...results import Results
 from ...results.clearance import SURFACES, wear_table
 

@@ -13,7 +13,7 @@ import math
 from dataclasses import dataclass
 
 from ...model import Model, ModelError
-from ...model.schema import ConstantSpeed, Harmonic, Polynomial
+from ...model.functions import ConstantSpeed, Harmonic, Polynomial
 from ...units import to_si
 
 PERIOD_RTOL = 1e-9  # periods whose ratio is this close to a whole number divide each other
