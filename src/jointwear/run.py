@@ -7,7 +7,8 @@ from collections.abc import Sequence
 from pathlib import Path
 
 from .interrupts import stop_requests
-from .model import ModelError, load_model
+from .io import check_folder
+from .model import load_model
 from .results import Results
 from .simulate import Progress, simulate
 
@@ -50,7 +51,7 @@ def run(
     """
     model = load_model(model_path, overrides)
     folder = Path(out)
-    _check_folder(folder)
+    check_folder(folder)
     results = simulate(model, progress=progress)
     companion = None
     if ideal and model.has_clearance and results.status == "success":
@@ -79,10 +80,3 @@ def _remove_companion(folder: Path) -> None:
             file.unlink()
     if not any(folder.iterdir()):
         folder.rmdir()
-
-
-def _check_folder(folder: Path) -> None:
-    """Refuse, before the run, an output path that cannot become a folder."""
-    existing = next(p for p in (folder, *folder.parents) if p.exists())
-    if not existing.is_dir():
-        raise ModelError([f"out: {existing} exists and is not a folder; give a folder path"])

@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import json
 import os
-import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -20,6 +19,7 @@ import pandas as pd
 import pyarrow as pa
 from pyarrow import csv
 
+from ..io import write_text
 from ..kernels.codes import Status
 from ..model import Model, parse_model
 from .run_state import RunState
@@ -77,7 +77,7 @@ class Results:
         path = Path(folder)
         path.mkdir(parents=True, exist_ok=True)
         (path / "summary.json").unlink(missing_ok=True)  # until rewritten, not a complete folder
-        _write_text(path / "model.json", self.model.model_dump_json(indent=2))
+        write_text(path / "model.json", self.model.model_dump_json(indent=2))
         _write_csv(self.timeseries, path / "timeseries.csv")
         self.timeseries.to_parquet(path / "timeseries.parquet", index=False)
         _write_csv(self.events, path / "events.csv")
@@ -86,7 +86,7 @@ class Results:
                 _write_csv(getattr(self, name), path / f"{name}.csv")
             else:  # an earlier run's, with clearance joints
                 (path / f"{name}.csv").unlink(missing_ok=True)
-        _write_text(path / "summary.json", json.dumps(self.summary, indent=2))  # last: complete
+        write_text(path / "summary.json", json.dumps(self.summary, indent=2))  # last: complete
         return path
 
 
@@ -104,13 +104,6 @@ def _write_csv(table: pd.DataFrame, path: Path) -> None:
         path,
         csv.WriteOptions(quoting_style="needed"),
     )
-
-
-def _write_text(path: Path, text: str) -> None:
-    """Write atomically: a reader never sees half a file."""
-    with tempfile.NamedTemporaryFile("w", dir=path.parent, delete=False, suffix=".tmp") as f:
-        f.write(text)
-    os.replace(f.name, path)
 
 
 def load_results(folder: str | os.PathLike) -> Results:

@@ -11,12 +11,13 @@ atomically.
 from __future__ import annotations
 
 import os
-import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 from numpy.typing import NDArray
+
+from ..io import write_atomic
 
 
 @dataclass(frozen=True)
@@ -51,8 +52,10 @@ class RunState:
 
     def save(self, path: str | os.PathLike) -> None:
         """Write the state to ``path`` (``.npz``) atomically: never half a file."""
-        target = Path(path)
-        with tempfile.NamedTemporaryFile(dir=target.parent, suffix=".npz", delete=False) as f:
+        write_atomic(path, self._write)
+
+    def _write(self, path: Path) -> None:
+        with open(path, "wb") as f:  # a file, not a name: np.savez would append ".npz"
             np.savez(
                 f,
                 time=self.time,
@@ -61,7 +64,6 @@ class RunState:
                 contact_on=self.contact_on,
                 impact_speed=self.impact_speed,
             )
-        os.replace(f.name, target)
 
 
 def load_run_state(path: str | os.PathLike) -> RunState:

@@ -12,13 +12,12 @@ from __future__ import annotations
 
 import csv
 import json
-import os
-import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
 import pandas as pd
 
+from ...io import check_folder, write_atomic, write_text
 from ...model import ModelError
 from ...results.clearance import WEAR_COLUMNS
 from ...results.run_state import RunState, load_run_state
@@ -64,9 +63,7 @@ def start_folder(folder: Path, columns: list[str], record: dict) -> None:
 
     ``record`` (settings and resolved model) is kept in the checkpoint, for ``--resume``.
     """
-    existing = next(p for p in (folder, *folder.parents) if p.exists())
-    if not existing.is_dir():
-        raise ModelError([f"out: {existing} exists and is not a folder; give a folder path"])
+    check_folder(folder)
     (folder / CHECKPOINTS).mkdir(parents=True, exist_ok=True)
     (folder / CHECKPOINTS / CHECKPOINT).unlink(missing_ok=True)  # first: it names the states
     (folder / SUMMARY).unlink(missing_ok=True)
@@ -76,7 +73,7 @@ def start_folder(folder: Path, columns: list[str], record: dict) -> None:
         old.unlink()
     _write_rows(folder / TABLE, columns, [])
     _write_rows(folder / PROFILES, PROFILE_COLUMNS, [])
-    _write_text(folder / MODEL, json.dumps(record["model"], indent=2))
+    write_text(folder / MODEL, json.dumps(record["model"], indent=2))
     save_checkpoint(folder, Checkpoint(0, 0, 0, 0.0, None), record)
 
 
@@ -101,7 +98,7 @@ def save_checkpoint(folder: Path, point: Checkpoint, record: dict) -> None:
         "state": state,
         **record,
     }
-    _write_text(folder / CHECKPOINTS / CHECKPOINT, json.dumps(data, indent=2))
+    write_text(folder / CHECKPOINTS / CHECKPOINT, json.dumps(data, indent=2))
     for old in (folder / CHECKPOINTS).glob("state_*.npz"):
         if old.name != state:
             old.unlink()
@@ -173,7 +170,7 @@ def read_tables(folder: Path) -> tuple[pd.DataFrame, pd.DataFrame]:
 
 def write_summary(folder: Path, summary: dict) -> None:
     """Write summary.json, whole or not at all."""
-    _write_text(folder / SUMMARY, json.dumps(summary, indent=2))
+    write_text(folder / SUMMARY, json.dumps(summary, indent=2))
 
 
 def _cut(path: Path, update: int) -> None:
@@ -191,16 +188,10 @@ def _cut(path: Path, update: int) -> None:
 
 
 def _write_rows(path: Path, header: list[str], rows: list[list]) -> None:
-    with tempfile.NamedTemporaryFile(
-        "w", dir=path.parent, suffix=".tmp", delete=False, newline=""
-    ) as f:
-        writer = csv.writer(f)
-        writer.writerow(header)
-        writer.writerows(rows)
-    os.replace(f.name, path)
+    def write(temporary: Path) -> None:
+        with open(temporary, "w", newline="") as f:
+            writer = csv.writer(f)
+            writer.writerow(header)
+            writer.writerows(rows)
 
-
-def _write_text(path: Path, text: str) -> None:
-    with tempfile.NamedTemporaryFile("w", dir=path.parent, suffix=".tmp", delete=False) as f:
-        f.write(text)
-    os.replace(f.name, path)
+    write_atomic(path, write)

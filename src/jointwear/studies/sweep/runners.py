@@ -23,6 +23,7 @@ from contextlib import suppress
 from dataclasses import dataclass
 from pathlib import Path
 
+from ...io import write_text
 from ...model.errors import ModelError
 
 CASE_FILE = "case.json"  # in each case folder: its settings and outcome, written last
@@ -91,7 +92,7 @@ def run_case(task: CaseTask) -> Outcome:
         "summary": summary,
     }
     with suppress(OSError):
-        _write_json(folder / CASE_FILE, {**task.record, **outcome})
+        write_text(folder / CASE_FILE, json.dumps({**task.record, **outcome}, indent=2))
     return outcome
 
 
@@ -106,12 +107,6 @@ def _simulate(task: CaseTask) -> dict:
     from ..life.study import life  # long-life wear runs; imported only when asked for
 
     return life(task.model_path, task.folder, cycles=task.cycles, overrides=task.overrides).summary
-
-
-def _write_json(path: Path, data: dict) -> None:
-    temporary = path.with_suffix(".tmp")
-    temporary.write_text(json.dumps(data, indent=2))
-    os.replace(temporary, path)
 
 
 def read_record(folder: Path) -> dict | None:

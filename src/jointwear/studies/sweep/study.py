@@ -20,7 +20,6 @@ from __future__ import annotations
 import json
 import math
 import os
-import tempfile
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -28,8 +27,8 @@ from pathlib import Path
 import pandas as pd
 
 from ...interrupts import stop_requests
+from ...io import check_folder, write_atomic, write_text
 from ...model import Model, ModelError, load_model
-from ...run import _check_folder
 from .cases import Case, check_vary, make_cases, si_value, value_text
 from .runners import CaseTask, Outcome, read_record, run_dask, run_local, run_serial
 
@@ -127,7 +126,7 @@ def sweep(
     cases = make_cases(texts)
     models = _load_cases(model_path, overrides, cases)
     folder = Path(out).resolve()
-    _check_folder(folder)
+    check_folder(folder)
     tasks = [_task(model_path, folder, overrides, cycles, c, models[c.id]) for c in cases]
     _write_json(folder / "sweep.json", _plan_record(model_path, texts, overrides, cycles, cases))
 
@@ -348,23 +347,13 @@ def _write_table(table: pd.DataFrame, folder: Path) -> None:
         kinds = {type(v) for v in parquet[column] if v is not None}
         if len(kinds) > 1:  # parquet wants one type per column
             parquet[column] = parquet[column].map(lambda v: None if v is None else str(v))
-    _replace(folder / "sweep.csv", lambda p: table.to_csv(p, index=False, float_format="%.12g"))
-    _replace(folder / "sweep.parquet", lambda p: parquet.to_parquet(p, index=False))
-
-
-def _replace(path: Path, write: Callable[[str], None]) -> None:
-    with tempfile.NamedTemporaryFile(dir=path.parent, suffix=".tmp", delete=False) as f:
-        temporary = f.name
-    try:
-        write(temporary)
-        os.replace(temporary, path)
-    finally:
-        Path(temporary).unlink(missing_ok=True)
+    write_atomic(folder / "sweep.csv", lambda p: table.to_csv(p, index=False, float_format="%.12g"))
+    write_atomic(folder / "sweep.parquet", lambda p: parquet.to_parquet(p, index=False))
 
 
 def _write_json(path: Path, data: dict) -> None:
     path.parent.mkdir(parents=True, exist_ok=True)
-    _replace(path, lambda p: Path(p).write_text(json.dumps(data, indent=2)))
+    write_text(path, json.dumps(data, indent=2))
 
 
 def _plan_record(
