@@ -4,8 +4,7 @@ After P. Flores, "Modeling and simulation of wear in revolute clearance joints i
 systems", Mechanism and Machine Theory 44 (2009) 1211-1222.
 """
 
-__version__ = "0.1.0"
-
+from ._version import __version__
 from .model import Model, ModelError, load_model
 from .results import Results, load_results
 from .run import run

@@ -14,7 +14,7 @@ from collections.abc import Callable
 import numpy as np
 import pandas as pd
 
-from . import __version__
+from ._version import __version__
 from .assembly import assemble
 from .interrupts import stop_requests
 from .kernels import loop

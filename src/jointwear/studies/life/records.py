@@ -19,7 +19,7 @@ import numpy as np
 import pandas as pd
 from numpy.typing import NDArray
 
-from ... import __version__
+from ..._version import __version__
 from ...model import Model
 from ...model.sections import RevoluteJoint
 from ...results import Results
