@@ -24,6 +24,7 @@ from .model.clearance import Clearance
 from .results import load_results
 from .run import IDEAL_FOLDER
 from .run import run as run_model
+from .status import SUCCESS
 from .studies.life.study import life as run_life
 from .studies.sweep.cases import make_plan
 from .studies.sweep.study import CaseReport
@@ -129,15 +130,15 @@ def run(
     for name, joint in results.summary.get("clearance_joints", {}).items():
         out.print(_joint_line(name, joint), soft_wrap=True, highlight=False)
     out.print(f"results in {out_dir}", soft_wrap=True)
-    comparison = results.summary.get("ideal_comparison", {"status": "success"})
-    if comparison["status"] != "success":
+    comparison = results.summary.get("ideal_comparison", {"status": SUCCESS})
+    if comparison["status"] != SUCCESS:
         err.print(
             f"the run with ideal joints ended '{comparison['status']}'; it is not saved and "
             "Fig. 7 shows the clearance run alone",
             soft_wrap=True,
         )
         raise typer.Exit(code=1)
-    if results.status != "success":
+    if results.status != SUCCESS:
         raise typer.Exit(code=1)
 
 
@@ -329,11 +330,11 @@ def sweep(
         bar.close()
     table = results.table
     counts = table["status"].value_counts(sort=False)  # in the order the cases come
-    order = sorted(counts.index, key=lambda status: status != "success")
+    order = sorted(counts.index, key=lambda status: status != SUCCESS)
     tally = ", ".join(f"{counts[status]} {status}" for status in order)
     skipped = f" ({len(results.skipped)} finished before)" if results.skipped else ""
     out.print(f"{len(table)} cases{skipped}: {tally}", soft_wrap=True, highlight=False)
-    for _, row in table[table["status"] != "success"].iterrows():
+    for _, row in table[table["status"] != SUCCESS].iterrows():
         out.print(f"{row['case']}: {row['status']}: {row['error']}", **PLAIN)
     out.print(f"table in {out_dir / 'sweep.csv'} and sweep.parquet", **PLAIN)
     if results.interrupted:
@@ -440,7 +441,7 @@ def life(
         if "clearance_growth_m" in joint:
             out.print(_life_line(name, joint), **PLAIN)
     out.print(f"results in {out_dir}", **PLAIN)
-    if summary["status"] != "success":
+    if summary["status"] != SUCCESS:
         raise typer.Exit(code=1)
 
 

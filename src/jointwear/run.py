@@ -11,6 +11,7 @@ from .io import check_folder
 from .model import load_model
 from .results import Results
 from .simulate import Progress, simulate
+from .status import SUCCESS
 
 IDEAL_FOLDER = "ideal"  # subfolder with the all-ideal companion run of a clearance model
 
@@ -54,10 +55,10 @@ def run(
     check_folder(folder)
     results = simulate(model, progress=progress)
     companion = None
-    if ideal and model.has_clearance and results.status == "success":
+    if ideal and model.has_clearance and results.status == SUCCESS:
         companion = simulate(model.ideal())
         results.summary["ideal_comparison"] = {"folder": IDEAL_FOLDER, "status": companion.status}
-        if companion.status != "success":
+        if companion.status != SUCCESS:
             companion = None
     with stop_requests():  # a Ctrl-C now must not leave a half-written folder
         results.save(folder)

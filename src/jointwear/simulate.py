@@ -32,8 +32,8 @@ from .results.clearance import (
     snapshot_table,
     wear_table,
 )
-from .results.run_results import status_message
 from .results.run_state import RunState
+from .status import status_message
 from .system import System, build_system, column_names, make_work
 
 CHUNK_WALL_S = 0.2  # target wall time of one compiled chunk [s]

@@ -20,25 +20,8 @@ import pyarrow as pa
 from pyarrow import csv
 
 from ..io import write_text
-from ..kernels.codes import Status
 from ..model import Model, parse_model
 from .run_state import RunState
-
-_MESSAGES = {
-    Status.RUNNING: "stopped between chunks",
-    Status.SUCCESS: "reached the end time",
-    Status.NON_FINITE: "the state became non-finite (NaN or inf) at the minimum step; check "
-    "forces and stiffness, or try tighter tolerances or a smaller solver.max_step",
-    Status.SINGULAR: "the constraint Jacobian became singular (a dead-centre or lock-up "
-    "position); check the geometry and the drivers",
-    Status.MAX_STEPS: "solver.max_steps was reached; raise it or loosen the tolerances",
-    Status.INTERRUPTED: "interrupted by the user; the results hold what was computed so far",
-}
-
-
-def status_message(status: Status) -> str:
-    """What a run status means, and what to try."""
-    return _MESSAGES[status]
 
 
 @dataclass(frozen=True)
@@ -64,7 +47,7 @@ class Results:
 
     @property
     def status(self) -> str:
-        """``success``, ``interrupted``, ``singular``, ... (see ``Status``)."""
+        """``success``, ``interrupted``, ``singular``, ... (``jointwear.status``)."""
         return self.summary["status"]
 
     @property

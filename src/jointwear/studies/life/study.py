@@ -45,6 +45,7 @@ import pandas as pd
 from ...interrupts import stop_requests
 from ...model import ModelError, load_model
 from ...results.run_state import RunState
+from ...status import INTERRUPTED, SUCCESS
 from . import files
 from .records import life_summary, table_columns
 from .settings import LifeSettings, cycle_driver, with_feedback
@@ -183,12 +184,12 @@ def life(
         point = files.Checkpoint(0, 0, 0, 0.0, None)
     with stop_requests() as stop:
         run = LifeRun(model, settings, driver, period, folder, record, point.wall_s, stop)
-        while point.cycles < cycles and run.status == "success":
+        while point.cycles < cycles and run.status == SUCCESS:
             point = run.update(point)
-            if progress is not None and run.status == "success":
+            if progress is not None and run.status == SUCCESS:
                 progress(point.cycles, cycles)
-            if stop[0] and run.status == "success" and point.cycles < cycles:
-                run.stop("interrupted", f"interrupted at {point.cycles} cycles{RESUME}")
+            if stop[0] and run.status == SUCCESS and point.cycles < cycles:
+                run.stop(INTERRUPTED, f"interrupted at {point.cycles} cycles{RESUME}")
     with stop_requests():  # the folder is completed whatever comes now
         table, profiles = files.read_tables(folder)
         wear = None if point.state is None else point.state.wear

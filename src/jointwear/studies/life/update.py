@@ -18,6 +18,7 @@ from ...results import Results
 from ...results.clearance import UM
 from ...results.run_state import RunState
 from ...simulate import simulate
+from ...status import CLEARANCE_LIMIT, FAILED, INTERRUPTED, SUCCESS, WORN_THROUGH
 from . import files
 from .records import (
     clearance_growths,
@@ -61,7 +62,7 @@ class LifeRun:
         self.model, self.settings, self.driver, self.period = model, settings, driver, period
         self.folder, self.record, self.stop_requested = folder, record, stop_requested
         self.wall_before, self.start = wall_before, time.perf_counter()
-        self.status, self.message = "success", f"reached {settings.cycles} cycles"
+        self.status, self.message = SUCCESS, f"reached {settings.cycles} cycles"
 
     def wall(self) -> float:
         """Wall time of the run, over every session [s]."""
@@ -174,14 +175,14 @@ class LifeRun:
         first = point.cycles + after
         span = f"cycles {first} to {first + count}"
         if self.stop_requested[0]:
-            self.stop("interrupted", f"interrupted before {span}{RESUME}")
+            self.stop(INTERRUPTED, f"interrupted before {span}{RESUME}")
             return None
         outcome = simulate(self._cycles_model(count), initial=begin)
-        if outcome.status == "interrupted":
-            self.stop("interrupted", f"interrupted during {span}{RESUME}")
+        if outcome.status == INTERRUPTED:
+            self.stop(INTERRUPTED, f"interrupted during {span}{RESUME}")
             return None
-        if outcome.status != "success":
-            self.stop("failed", f"the run of {span} ended '{outcome.status}': {outcome.message}")
+        if outcome.status != SUCCESS:
+            self.stop(FAILED, f"the run of {span} ended '{outcome.status}': {outcome.message}")
             return None
         return outcome
 
@@ -225,7 +226,7 @@ class LifeRun:
             journal = wear[k, 1, : c.sectors].max()
             if journal >= c.journal_radius:
                 self.stop(
-                    "worn_through",
+                    WORN_THROUGH,
                     f"{joint.name}: the journal would be worn {journal * 1e3:.4g} mm deep "
                     f"between cycles {before} and {after}, through its radius "
                     f"{c.journal_radius * 1e3:.4g} mm",
@@ -234,7 +235,7 @@ class LifeRun:
             limit = self.settings.max_growth * c.radial_clearance
             if growth[k] > limit:
                 self.stop(
-                    "clearance_limit",
+                    CLEARANCE_LIMIT,
                     f"{joint.name}: the effective clearance would grow by {growth[k] * UM:.4g} "
                     f"µm, {growth[k] / c.radial_clearance:.0%} of the nominal "
                     f"{c.radial_clearance * UM:.4g} µm, between cycles {before} and {after}: "

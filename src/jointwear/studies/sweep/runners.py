@@ -25,6 +25,7 @@ from pathlib import Path
 
 from ...io import write_text
 from ...model.errors import ModelError
+from ...status import ERROR, INTERRUPTED, SUCCESS
 
 CASE_FILE = "case.json"  # in each case folder: its settings and outcome, written last
 POLL_S = 0.3  # how often a runner looks at the stop flag while cases run [s]
@@ -79,12 +80,12 @@ def run_case(task: CaseTask) -> Outcome:
         folder.mkdir(parents=True, exist_ok=True)
         (folder / CASE_FILE).unlink(missing_ok=True)  # until rewritten, the case is not done
         summary = _simulate(task)
-        status = summary.get("status", "success")
-        error = "" if status == "success" else summary.get("message", status)
+        status = summary.get("status", SUCCESS)
+        error = "" if status == SUCCESS else summary.get("message", status)
     except ModelError as problem:
-        summary, status, error = {}, "error", "; ".join(problem.problems)
+        summary, status, error = {}, ERROR, "; ".join(problem.problems)
     except Exception as problem:  # a case's failure must not stop the sweep
-        summary, status, error = {}, "error", f"{type(problem).__name__}: {problem}"
+        summary, status, error = {}, ERROR, f"{type(problem).__name__}: {problem}"
     outcome = {
         "status": status,
         "error": " ".join(error.split()),  # one line
@@ -131,7 +132,7 @@ def run_serial(tasks: Sequence[CaseTask], stop: Stop) -> Iterator[tuple[CaseTask
             return
         outcome = run_case(task)
         yield task, outcome
-        if outcome["status"] == "interrupted":
+        if outcome["status"] == INTERRUPTED:
             stop[0] = True
 
 
@@ -222,7 +223,7 @@ def _result(future: Future) -> Outcome:
         return future.result()
     except Exception as problem:  # the worker died (killed, out of memory, ...)
         return {
-            "status": "error",
+            "status": ERROR,
             "error": " ".join(f"{type(problem).__name__}: {problem}".split()),
             "wall_s": float("nan"),
             "summary": {},

@@ -29,12 +29,12 @@ import pandas as pd
 from ...interrupts import stop_requests
 from ...io import check_folder, write_atomic, write_text
 from ...model import Model, ModelError, load_model
+from ...status import NOT_RUN, SUCCESS
 from .cases import Case, check_vary, make_cases, si_value, value_text
 from .runners import CaseTask, Outcome, read_record, run_dask, run_local, run_serial
 
 CASES_FOLDER = "cases"
 FIXED_COLUMNS = ("case", "status", "error", "wall_s")  # the varied paths follow "case"
-NOT_RUN = "not_run"  # status of a case the sweep stopped before
 
 
 @dataclass(frozen=True)
@@ -65,7 +65,7 @@ class SweepResults:
     @property
     def failed(self) -> list[str]:
         """The cases that did not end with status success (including those not run)."""
-        return self.table.loc[self.table["status"] != "success", "case"].tolist()
+        return self.table.loc[self.table["status"] != SUCCESS, "case"].tolist()
 
 
 def sweep(
@@ -253,12 +253,12 @@ def _task(
 def _finished(folder: Path, record: dict) -> bool:
     """Whether the case folder holds a successful run with the same settings."""
     done = read_record(folder)
-    if done is None or done.get("status") != "success":
+    if done is None or done.get("status") != SUCCESS:
         return False
     if any(done.get(key) != record[key] for key in ("kind", "cycles", "model")):
         return False
     try:
-        return json.loads((folder / "summary.json").read_text()).get("status") == "success"
+        return json.loads((folder / "summary.json").read_text()).get("status") == SUCCESS
     except (OSError, ValueError, AttributeError):
         return False
 
