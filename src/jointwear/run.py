@@ -9,11 +9,9 @@ from pathlib import Path
 from .interrupts import stop_requests
 from .io import check_folder
 from .model import load_model
-from .results import Results
+from .results import IDEAL_FOLDER, Results
 from .simulate import Progress, simulate
 from .status import SUCCESS
-
-IDEAL_FOLDER = "ideal"  # subfolder with the all-ideal companion run of a clearance model
 
 
 def run(

@@ -23,6 +23,8 @@ from ..io import write_text
 from ..model import Model, parse_model
 from .run_state import RunState
 
+IDEAL_FOLDER = "ideal"  # subfolder with the all-ideal companion run of a clearance model
+
 
 @dataclass(frozen=True)
 class Results:
