@@ -21,6 +21,7 @@ from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wai
 from concurrent.futures.process import BrokenProcessPool
 from contextlib import suppress
 from dataclasses import dataclass
+from importlib import import_module
 from pathlib import Path
 
 from ...io import write_text
@@ -30,6 +31,7 @@ from ...status import ERROR, INTERRUPTED, SUCCESS
 CASE_FILE = "case.json"  # in each case folder: its settings and outcome, written last
 POLL_S = 0.3  # how often a runner looks at the stop flag while cases run [s]
 CONNECT_TIMEOUT_S = 10  # to reach a Dask scheduler [s]
+WORKER_MODULE = "jointwear.run"  # what a case imports (simulate, the kernels): before workers start
 
 
 @dataclass(frozen=True)
@@ -152,8 +154,10 @@ def run_local(
     """
     method = _start_method()
     context = multiprocessing.get_context(method)
-    if method == "forkserver":
-        context.set_forkserver_preload(["jointwear.run"])  # imported once, not per worker
+    if method == "fork":
+        import_module(WORKER_MODULE)  # the workers fork from this process with it imported
+    elif method == "forkserver":
+        context.set_forkserver_preload([WORKER_MODULE])  # imported once, not per worker
     pids = context.SimpleQueue()
     pool = ProcessPoolExecutor(
         max_workers=workers, mp_context=context, initializer=_start_worker, initargs=(pids,)
