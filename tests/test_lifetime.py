@@ -27,11 +27,11 @@ import jointwear as jw
 from jointwear.cli import app
 from jointwear.simulate import simulate
 from jointwear.studies.life import files as lifetime_files
-from jointwear.studies.life import life
 from jointwear.studies.life import update as lifetime_update
 from jointwear.studies.life.records import clearance_growth
 from jointwear.studies.life.settings import cycle_driver
-from jointwear.studies.sweep import sweep
+from jointwear.studies.life.study import life
+from jointwear.studies.sweep.study import sweep
 
 ROOT = Path(__file__).parents[1]
 FOURBAR = ROOT / "examples" / "flores2009_fourbar.toml"

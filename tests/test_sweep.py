@@ -25,9 +25,9 @@ import jointwear as jw
 from jointwear.cli import app
 from jointwear.figures.sweep import plot_sweep, quantity
 from jointwear.model import ModelError
-from jointwear.studies.sweep import sweep
 from jointwear.studies.sweep.cases import make_cases, make_plan, parse_vary, si_value
 from jointwear.studies.sweep.runners import _start_method
+from jointwear.studies.sweep.study import sweep
 
 ROOT = Path(__file__).parents[1]
 FOURBAR = ROOT / "examples" / "flores2009_fourbar.toml"

@@ -19,20 +19,20 @@ if TYPE_CHECKING:
     from .results import Results, load_results
     from .run import run
     from .simulate import simulate
-    from .studies.life import LifeResults, life
-    from .studies.sweep import sweep
+    from .studies.life.study import LifeResults, life
+    from .studies.sweep.study import sweep
 
 _PUBLIC = {  # public name -> the module that defines it
-    "LifeResults": ".studies.life",
+    "LifeResults": ".studies.life.study",
     "Model": ".model",
     "ModelError": ".model",
     "Results": ".results",
-    "life": ".studies.life",
+    "life": ".studies.life.study",
     "load_model": ".model",
     "load_results": ".results",
     "run": ".run",
     "simulate": ".simulate",
-    "sweep": ".studies.sweep",
+    "sweep": ".studies.sweep.study",
 }
 
 __all__ = [

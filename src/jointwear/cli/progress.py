@@ -10,7 +10,7 @@ from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn, Ti
 from .common import PLAIN, err
 
 if TYPE_CHECKING:
-    from ..studies.sweep import CaseReport
+    from ..studies.sweep.study import CaseReport
 
 
 def progress_bar(label: str, count: str) -> Progress:

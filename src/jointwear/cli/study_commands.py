@@ -46,8 +46,8 @@ def sweep(
     """
     from ..model import ModelError
     from ..status import SUCCESS
-    from ..studies.sweep import sweep as run_sweep
     from ..studies.sweep.cases import make_plan
+    from ..studies.sweep.study import sweep as run_sweep
 
     settings = list(overrides or [])
     if t_end is not None:
@@ -149,7 +149,7 @@ def life(
     """
     from ..model import ModelError
     from ..status import SUCCESS
-    from ..studies.life import life as run_life
+    from ..studies.life.study import life as run_life
 
     bar = ProgressBar("wearing", "{task.completed:,} / {task.total:,} cycles")
     try:
