@@ -128,8 +128,8 @@ def convergence(changes: list[str], direct: bool) -> list[dict]:
     """Life runs of the four-bar over 1e6 turns per ``--max-change`` (and, if ``direct``, with
     no extrapolation), at the paper's wear coefficient and at one a thousand times smaller:
     when the clearance has grown by 25, 50 and 75 % of c, and where each run ended."""
-    from jointwear.lifetime import life
-    from jointwear.lifetime_records import cycles_at
+    from jointwear.studies.life.records import cycles_at
+    from jointwear.studies.life.study import life
 
     rows = []
     settings = [(k, change, True) for k in WEAR_COEFFICIENTS for change in changes]

@@ -1,4 +1,4 @@
-"""Long-life wear (``jointwear.lifetime.life`` and ``jointwear life``) against independent answers.
+"""Long-life wear (``jointwear.life`` and ``jointwear life``) against independent answers.
 
 Two mechanisms:
 - the paper's four-bar (examples/flores2009_fourbar.toml) with five times the paper's wear
@@ -24,13 +24,14 @@ import pytest
 from typer.testing import CliRunner
 
 import jointwear as jw
-from jointwear import lifetime_files, lifetime_update
 from jointwear.cli import app
-from jointwear.lifetime import life
-from jointwear.lifetime_records import clearance_growth
-from jointwear.lifetime_settings import cycle_driver
 from jointwear.simulate import simulate
-from jointwear.sweep import sweep
+from jointwear.studies.life import files as lifetime_files
+from jointwear.studies.life import update as lifetime_update
+from jointwear.studies.life.records import clearance_growth
+from jointwear.studies.life.settings import cycle_driver
+from jointwear.studies.life.study import life
+from jointwear.studies.sweep.study import sweep
 
 ROOT = Path(__file__).parents[1]
 FOURBAR = ROOT / "examples" / "flores2009_fourbar.toml"

@@ -11,14 +11,9 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from jointwear.kernels.codes import JointKind, Method
-from jointwear.model import (
-    Harmonic,
-    Model,
-    ModelError,
-    apply_overrides,
-    load_model,
-    parse_model,
-)
+from jointwear.model import Model, ModelError, load_model, parse_model
+from jointwear.model.functions import Harmonic
+from jointwear.model.overrides import apply_overrides
 from jointwear.units import to_si
 
 PENDULUM_TOML = """\

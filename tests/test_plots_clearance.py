@@ -5,8 +5,8 @@ import pytest
 from PIL import Image
 from runs import EXAMPLES, simulate_ok
 
-from jointwear.animation import save_animation
-from jointwear.plots_clearance import (
+from jointwear.figures.animation import save_animation
+from jointwear.figures.clearance import (
     PROFILE_SHARE,
     plot_dynamics,
     plot_orbit,

@@ -12,7 +12,7 @@ from runs import EXAMPLES, FOURBAR_COLUMNS
 
 import jointwear as jw
 from jointwear.kernels.codes import Status
-from jointwear.results import status_message
+from jointwear.status import status_message
 
 FILES = ("summary.json", "model.json", "timeseries.csv", "timeseries.parquet", "events.csv")
 CLEARANCE_FILES = ("wear.csv", "wear_snapshots.csv", "impacts.csv")

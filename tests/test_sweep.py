@@ -1,4 +1,4 @@
-"""Parameter studies: ``jointwear sweep`` and ``jointwear.sweep.sweep``.
+"""Parameter studies: ``jointwear sweep`` and ``jointwear.sweep``.
 
 Short runs (0.01 s, a quarter crank turn) of the paper's four-bar: what is checked is the
 bookkeeping (cases, names, table, skipping, failures, interruption, the Dask path), not the
@@ -23,11 +23,11 @@ from typer.testing import CliRunner
 
 import jointwear as jw
 from jointwear.cli import app
-from jointwear.model_errors import ModelError
-from jointwear.sweep import sweep
-from jointwear.sweep_cases import make_cases, make_plan, parse_vary, si_value
-from jointwear.sweep_plots import plot_sweep, quantity
-from jointwear.sweep_runners import _start_method
+from jointwear.figures.sweep import plot_sweep, quantity
+from jointwear.model import ModelError
+from jointwear.studies.sweep.cases import make_cases, make_plan, parse_vary, si_value
+from jointwear.studies.sweep.runners import _start_method
+from jointwear.studies.sweep.study import sweep
 
 ROOT = Path(__file__).parents[1]
 FOURBAR = ROOT / "examples" / "flores2009_fourbar.toml"
@@ -464,7 +464,7 @@ def test_local_processes_are_forked_only_from_a_single_threaded_process():
         release.set()
         other.join()
     if sys.platform == "linux":  # a fresh process has no other thread: workers are forked
-        code = "from jointwear.sweep_runners import _start_method; print(_start_method())"
+        code = "from jointwear.studies.sweep.runners import _start_method; print(_start_method())"
         fresh = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
         assert fresh.stdout.strip() == "fork", fresh.stderr
 

@@ -2,16 +2,38 @@
 
 After P. Flores, "Modeling and simulation of wear in revolute clearance joints in multibody
 systems", Mechanism and Machine Theory 44 (2009) 1211-1222.
+
+``import jointwear`` is cheap: each public name below imports its module (pydantic, pandas,
+numba, ...) the first time it is used (PEP 562).
 """
 
-__version__ = "0.1.0"
+import sys
+from importlib import import_module
+from types import ModuleType
+from typing import TYPE_CHECKING
 
-from .lifetime import LifeResults, life
-from .model import Model, ModelError, load_model
-from .results import Results, load_results
-from .run import run
-from .simulate import simulate
-from .sweep import sweep
+from ._version import __version__
+
+if TYPE_CHECKING:
+    from .model import Model, ModelError, load_model
+    from .results import Results, load_results
+    from .run import run
+    from .simulate import simulate
+    from .studies.life.study import LifeResults, life
+    from .studies.sweep.study import sweep
+
+_PUBLIC = {  # public name -> the module that defines it
+    "LifeResults": ".studies.life.study",
+    "Model": ".model",
+    "ModelError": ".model",
+    "Results": ".results",
+    "life": ".studies.life.study",
+    "load_model": ".model",
+    "load_results": ".results",
+    "run": ".run",
+    "simulate": ".simulate",
+    "sweep": ".studies.sweep.study",
+}
 
 __all__ = [
     "LifeResults",
@@ -26,3 +48,32 @@ __all__ = [
     "simulate",
     "sweep",
 ]
+
+
+def __getattr__(name: str) -> object:
+    """Import a public name on first use."""
+    if name not in _PUBLIC:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    value = getattr(import_module(_PUBLIC[name], __name__), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted({*globals(), *_PUBLIC})
+
+
+class _Package(ModuleType):
+    """The package module, keeping ``run`` and ``simulate`` the functions of those names.
+
+    Importing the submodule ``jointwear.run`` sets the package's attribute ``run`` to that
+    module, which would hide the function; the functions are the public names.
+    """
+
+    def __setattr__(self, name: str, value: object) -> None:
+        if name in _PUBLIC and isinstance(value, ModuleType):
+            return
+        super().__setattr__(name, value)
+
+
+sys.modules[__name__].__class__ = _Package

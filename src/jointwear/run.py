@@ -7,11 +7,11 @@ from collections.abc import Sequence
 from pathlib import Path
 
 from .interrupts import stop_requests
-from .model import ModelError, load_model
-from .results import Results
+from .io import check_folder
+from .model import load_model
+from .results import IDEAL_FOLDER, Results
 from .simulate import Progress, simulate
-
-IDEAL_FOLDER = "ideal"  # subfolder with the all-ideal companion run of a clearance model
+from .status import SUCCESS
 
 
 def run(
@@ -50,13 +50,13 @@ def run(
     """
     model = load_model(model_path, overrides)
     folder = Path(out)
-    _check_folder(folder)
+    check_folder(folder)
     results = simulate(model, progress=progress)
     companion = None
-    if ideal and model.has_clearance and results.status == "success":
+    if ideal and model.has_clearance and results.status == SUCCESS:
         companion = simulate(model.ideal())
         results.summary["ideal_comparison"] = {"folder": IDEAL_FOLDER, "status": companion.status}
-        if companion.status != "success":
+        if companion.status != SUCCESS:
             companion = None
     with stop_requests():  # a Ctrl-C now must not leave a half-written folder
         results.save(folder)
@@ -64,7 +64,7 @@ def run(
         if companion is not None:
             companion.save(folder / IDEAL_FOLDER)
         if figures and len(results.timeseries) > 1:
-            from .figures import save_figures  # matplotlib only when figures are wanted
+            from .figures.folder import save_figures  # matplotlib only when figures are wanted
 
             save_figures(results, folder / "figures", ideal=companion)
     return results
@@ -79,10 +79,3 @@ def _remove_companion(folder: Path) -> None:
             file.unlink()
     if not any(folder.iterdir()):
         folder.rmdir()
-
-
-def _check_folder(folder: Path) -> None:
-    """Refuse, before the run, an output path that cannot become a folder."""
-    existing = next(p for p in (folder, *folder.parents) if p.exists())
-    if not existing.is_dir():
-        raise ModelError([f"out: {existing} exists and is not a folder; give a folder path"])

@@ -14,16 +14,8 @@ from collections.abc import Callable
 import numpy as np
 import pandas as pd
 
-from . import __version__
+from ._version import __version__
 from .assembly import assemble
-from .clearance_results import (
-    IMPACT_COLUMNS,
-    clearance_joint_names,
-    impact_rows,
-    joint_summaries,
-    snapshot_table,
-    wear_table,
-)
 from .interrupts import stop_requests
 from .kernels import loop
 from .kernels.codes import N_COUNTERS, Counter, Method, Status
@@ -33,8 +25,17 @@ from .kernels.elements.journal import DEGREES_OF_FREEDOM, N_IMPACT_INFO, make_jo
 from .kernels.integrate.abm import make_abm_state
 from .kernels.integrate.rk import DOPRI5, S_T, make_rk_state
 from .model import Model
-from .results import Results, status_message
-from .run_state import RunState
+from .results import Results
+from .results.clearance import (
+    IMPACT_COLUMNS,
+    clearance_joint_names,
+    impact_rows,
+    joint_summaries,
+    snapshot_table,
+    wear_table,
+)
+from .results.run_state import RunState
+from .status import status_message
 from .system import System, build_system, column_names, constraint_count
 
 CHUNK_WALL_S = 0.2  # target wall time of one compiled chunk [s]

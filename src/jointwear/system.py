@@ -16,7 +16,7 @@ from .kernels.codes import DriverKind, EventDirection, FunctionKind
 from .kernels.elements import journal as jc
 from .kernels.loop import UserEvents
 from .model import Model
-from .model_clearance import WEAR_DISTRIBUTIONS, Clearance, law_parameters
+from .model.clearance import WEAR_DISTRIBUTIONS, Clearance, law_parameters
 
 GROUND = -1
 MAX_COEFFICIENTS = 8

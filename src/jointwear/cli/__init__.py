@@ -1,0 +1,15 @@
+"""Command-line interface: thin wrappers over ``run``, ``load_model`` and the plots.
+
+Exit codes: 0 success, 1 the run ended without reaching its end time (interrupted or a
+solver failure; the results folder holds what was computed), 2 invalid input (one line per
+problem on stderr, no traceback).
+"""
+
+import typer
+
+from .run_commands import check, plot, run
+from .study_commands import life, sweep
+
+app = typer.Typer(add_completion=False, no_args_is_help=True, help=__doc__.splitlines()[0])
+for command in (run, check, plot, sweep, life):
+    app.command()(command)

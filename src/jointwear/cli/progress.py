@@ -1,0 +1,90 @@
+"""Progress on a terminal: a bar for runs and life runs, a bar or a line per case for sweeps."""
+
+from __future__ import annotations
+
+import time
+from typing import TYPE_CHECKING
+
+from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn, TimeRemainingColumn
+
+from .common import PLAIN, err
+
+if TYPE_CHECKING:
+    from ..studies.sweep.study import CaseReport
+
+
+def progress_bar(label: str, count: str) -> Progress:
+    """A transient rich progress bar on stderr: label, bar, count, elapsed time and ETA."""
+    return Progress(
+        TextColumn(label),
+        BarColumn(),
+        TextColumn(count),
+        TimeElapsedColumn(),
+        TextColumn("ETA"),
+        TimeRemainingColumn(),
+        console=err,
+        transient=True,
+    )
+
+
+class ProgressBar:
+    """A progress bar on a terminal, shown once the work has lasted ``after_s`` [s].
+
+    Called as ``bar(done, total)``; ``count`` formats them (rich task fields).
+    """
+
+    def __init__(self, label: str, count: str, after_s: float = 0.0) -> None:
+        self.label, self.count, self.after_s = label, count, after_s
+        self.start = time.perf_counter()
+        self.bar: Progress | None = None
+        self.task = 0
+
+    def __call__(self, done: float, total: float) -> None:
+        """Show ``done`` of ``total``."""
+        if self.bar is None:
+            if not err.is_terminal or time.perf_counter() - self.start < self.after_s:
+                return  # no bar in logs and pipes, nor for short work
+            self.bar = progress_bar(self.label, self.count)
+            self.bar.start()
+            self.task = self.bar.add_task(self.label, total=total)
+        self.bar.update(self.task, completed=done)
+
+    def close(self) -> None:
+        """Remove the bar, if one was shown."""
+        if self.bar is not None:
+            self.bar.stop()
+
+
+class SweepProgress:
+    """Cases done: a progress bar on a terminal, else a line per case on stderr."""
+
+    def __init__(self) -> None:
+        self.bar: Progress | None = None
+        self.task = 0
+
+    def __call__(self, report: CaseReport | None, done: int, total: int) -> None:
+        """Show a case's report (None: the runs start) and ``done`` of ``total`` cases."""
+        if report is None:
+            line = None  # the runs start
+        elif report.skipped:
+            line = f"[{done}/{total}] {report.case}: finished before, skipped"
+        else:
+            outcome = report.status + (f" ({report.error})" if report.error else "")
+            line = f"[{done}/{total}] {report.case}: {outcome}, {report.wall_s:.3g} s"
+        runs_started = report is None or not report.skipped
+        if self.bar is None and runs_started and err.is_terminal:
+            # only once the local processes have started: they may be forked, and the bar
+            # runs a thread
+            self.bar = progress_bar("sweep", "{task.completed}/{task.total} cases")
+            self.bar.start()
+            self.task = self.bar.add_task("sweep", total=total)
+        console = err if self.bar is None else self.bar.console
+        if line is not None:
+            console.print(line, **PLAIN)
+        if self.bar is not None:
+            self.bar.update(self.task, completed=done)
+
+    def close(self) -> None:
+        """Remove the bar, if one was shown."""
+        if self.bar is not None:
+            self.bar.stop()

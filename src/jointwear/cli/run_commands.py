@@ -1,0 +1,175 @@
+"""The commands about one model: ``run``, ``check`` and ``plot``."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from typing import TYPE_CHECKING, Annotated
+
+import typer
+from rich.markup import escape
+from rich.table import Table
+
+from .common import ModelPath, Overrides, err, fail, out
+from .progress import ProgressBar
+
+if TYPE_CHECKING:
+    from ..model.clearance import Clearance
+
+PROGRESS_AFTER_S = 1.0  # show a progress bar only for runs longer than this
+HERTZ_REFERENCE_FORCES = (100.0, 1000.0)  # loads at which `check` shows the Hertz patch [N]
+
+
+def run(
+    model: ModelPath,
+    out_dir: Annotated[Path, typer.Option("--out", help="Results folder.")] = Path("results"),
+    t_end: Annotated[float | None, typer.Option("--t-end", help="End time [s].")] = None,
+    overrides: Overrides = None,
+    figures: Annotated[bool, typer.Option("--figures/--no-figures", help="Draw figures.")] = True,
+    ideal: Annotated[
+        bool,
+        typer.Option(
+            "--ideal/--no-ideal",
+            help="With clearance joints, also run the all-ideal mechanism into OUT/ideal.",
+        ),
+    ] = True,
+) -> None:
+    """Simulate MODEL and write the results folder (summary, time series, wear, figures)."""
+    from ..model import ModelError
+    from ..run import run as run_model
+    from ..status import SUCCESS
+
+    settings = list(overrides or [])
+    if t_end is not None:
+        settings.append(f"solver.t_end={t_end!r}")
+    bar = ProgressBar(
+        "simulating", "t = {task.completed:.4g} / {task.total:.4g} s", PROGRESS_AFTER_S
+    )
+    try:
+        results = run_model(
+            model, out_dir, overrides=settings, figures=figures, ideal=ideal, progress=bar
+        )
+    except ModelError as error:
+        raise fail(error) from None
+    finally:
+        bar.close()
+    stats = results.summary["stats"]
+    out.print(
+        f"{results.status}: {results.message}; t = {stats['t_reached']:.6g} s, "
+        f"{stats['accepted_steps']} steps, {stats['simulation_wall_s']:.3g} s wall",
+        soft_wrap=True,
+    )
+    for name, joint in results.summary.get("clearance_joints", {}).items():
+        out.print(_joint_line(name, joint), soft_wrap=True, highlight=False)
+    out.print(f"results in {out_dir}", soft_wrap=True)
+    comparison = results.summary.get("ideal_comparison", {"status": SUCCESS})
+    if comparison["status"] != SUCCESS:
+        err.print(
+            f"the run with ideal joints ended '{comparison['status']}'; it is not saved and "
+            "Fig. 7 shows the clearance run alone",
+            soft_wrap=True,
+        )
+        raise typer.Exit(code=1)
+    if results.status != SUCCESS:
+        raise typer.Exit(code=1)
+
+
+def _joint_line(name: str, joint: dict) -> str:
+    """One line of a clearance joint's headline figures."""
+    wear = []
+    for surface in ("journal", "bearing"):
+        angle = joint[f"max_wear_angle_{surface}_deg"]
+        where = f" at {angle:.4g}°" if angle is not None else ""
+        wear.append(f"{surface} {joint[f'max_wear_depth_{surface}_m'] * 1e6:.4g} µm{where}")
+    return (
+        f"{name}: max contact force {joint['max_contact_force_n'] / 1e3:.4g} kN, in contact "
+        f"{100 * joint['contact_time_fraction']:.4g} % of the time, {joint['impacts']} impacts; "
+        f"max wear depth {', '.join(wear)}"
+    )
+
+
+def check(model: ModelPath, overrides: Overrides = None) -> None:
+    """Validate MODEL, assemble it and print its degrees of freedom, initial pose and joints.
+
+    The pose is assembled with every journal centred in its bearing; for each clearance
+    joint the radial clearance, the contact stiffness K and the Hertz parameters follow.
+    """
+    from ..assembly import assemble  # the model schema and one compiled kernel, no pandas
+    from ..model import ModelError, load_model
+    from ..system import build_system
+
+    try:
+        parsed = load_model(model, overrides or [])
+        assembly = assemble(parsed, build_system(parsed, ideal=True))
+    except ModelError as error:
+        raise fail(error) from None
+    out.print(f"model '{parsed.name}': valid")
+    freed = 2 * len(parsed.clearance_joints)
+    out.print(
+        f"degrees of freedom: {assembly.dof_without_drivers + freed} (joints only), "
+        f"{assembly.dof + freed} with drivers"
+        + (f", of which {freed} from clearance joints" if freed else "")
+    )
+    out.print(
+        f"assembled in {assembly.iterations} Newton iterations, residual {assembly.residual:.2e}"
+    )
+    table = Table(title="initial pose")
+    for column in ("body", "x [m]", "y [m]", "phi [deg]", "vx [m/s]", "vy [m/s]", "omega [rad/s]"):
+        table.add_column(escape(column), justify="right")
+    n = assembly.y0.shape[0] // 2
+    for i, body in enumerate(parsed.bodies):
+        x, y, phi = assembly.y0[3 * i : 3 * i + 3]
+        vx, vy, w = assembly.y0[n + 3 * i : n + 3 * i + 3]
+        table.add_row(body.name, *(f"{v:.6g}" for v in (x, y, math.degrees(phi), vx, vy, w)))
+    out.print(table)
+    for joint in parsed.clearance_joints:
+        out.print(_clearance_table(joint.name, joint.clearance))
+
+
+def _clearance_table(name: str, clearance: Clearance) -> Table:
+    """The derived contact and wear parameters of a clearance joint."""
+    table = Table(title=f"clearance joint '{name}'")
+    table.add_column("quantity")
+    table.add_column("value", justify="right")
+    table.add_column("unit")
+    rows = [
+        ("radial clearance c = R_B - R_J", clearance.radial_clearance * 1e3, "mm"),
+        (f"contact stiffness K (n = {clearance.exponent:g})", clearance.stiffness, "N/m^n"),
+        ("contact modulus E*", clearance.contact_modulus / 1e9, "GPa"),
+        ("relative radius R* = R_B R_J / c", clearance.relative_radius, "m"),
+    ]
+    for force in HERTZ_REFERENCE_FORCES:
+        b, p_max = clearance.hertz_patch(force)
+        rows.append((f"Hertz half-width b at {force:g} N", b * 1e3, "mm"))
+        rows.append((f"Hertz peak pressure at {force:g} N", p_max / 1e6, "MPa"))
+    rows.append((f"normal law: {clearance.normal_law}", clearance.restitution_coefficient, "c_e"))
+    rows.append((f"friction law: {clearance.friction_law}", clearance.friction_coefficient, "c_f"))
+    if clearance.wear_law == "archard":
+        rows.append(("wear law: archard, k", clearance.archard_coefficient, "1/Pa"))
+    else:
+        rows.append(("wear law: reye, shear strength", clearance.shear_strength / 1e6, "MPa"))
+    rows.append((f"sectors per surface ({clearance.wear_distribution})", clearance.sectors, ""))
+    for quantity, value, unit in rows:
+        shown = "-" if value is None else f"{value:.6g}"
+        table.add_row(escape(quantity), shown, escape(unit))
+    return table
+
+
+def plot(
+    folder: Annotated[Path, typer.Argument(help="Results folder.")],
+    animation: Annotated[
+        bool, typer.Option("--animation/--no-animation", help="Also write the GIF.")
+    ] = True,
+) -> None:
+    """Draw (again) the figures of a results folder into FOLDER/figures."""
+    if not (folder / "summary.json").is_file():
+        err.print(f"{folder}: not a results folder (no summary.json)", markup=False, soft_wrap=True)
+        raise typer.Exit(code=2)
+    from ..figures.folder import save_figures  # matplotlib only for this command
+    from ..results import IDEAL_FOLDER, load_results
+
+    companion = folder / IDEAL_FOLDER
+    ideal = load_results(companion) if (companion / "summary.json").is_file() else None
+    figures = save_figures(load_results(folder), folder / "figures", ideal, animation=animation)
+    for path in figures:
+        out.print(str(path), soft_wrap=True)

@@ -1,0 +1,202 @@
+"""The commands of the studies: ``sweep`` and ``life``."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
+from .common import PLAIN, ModelPath, Overrides, err, fail, out
+from .progress import ProgressBar, SweepProgress
+
+
+def sweep(
+    model: ModelPath,
+    out_dir: Annotated[Path, typer.Option("--out", help="Sweep folder.", show_default=False)],
+    vary: Annotated[
+        list[str] | None,
+        typer.Option(
+            "--vary", help="Vary a model value: dotted.path=V1,V2,... (repeatable; all combined)."
+        ),
+    ] = None,
+    sweep_file: Annotated[
+        Path | None,
+        typer.Option("--file", help="Sweep file: TOML with [vary] (path = [values]) and [set]."),
+    ] = None,
+    overrides: Overrides = None,
+    t_end: Annotated[float | None, typer.Option("--t-end", help="End time [s].")] = None,
+    cycles: Annotated[
+        int | None, typer.Option("--cycles", help="Long-life wear runs of N cycles per case.")
+    ] = None,
+    scheduler: Annotated[
+        str | None, typer.Option("--scheduler", help="Dask scheduler address (tcp://host:8786).")
+    ] = None,
+    workers: Annotated[
+        int | None, typer.Option("--workers", help="Local processes [default: one per core].")
+    ] = None,
+    figures: Annotated[
+        bool, typer.Option("--figures/--no-figures", help="Draw comparison figures.")
+    ] = True,
+) -> None:
+    """Run MODEL for every combination of the varied values; tabulate and compare the cases.
+
+    OUT gets cases/<case>/ (a results folder per case), sweep.csv and sweep.parquet (one row
+    per case) and figures/. Running the same sweep again skips the cases already finished.
+    """
+    from ..model import ModelError
+    from ..status import SUCCESS
+    from ..studies.sweep.cases import make_plan
+    from ..studies.sweep.study import sweep as run_sweep
+
+    settings = list(overrides or [])
+    if t_end is not None:
+        settings.append(f"solver.t_end={t_end!r}")
+    bar = SweepProgress()
+    try:
+        plan = make_plan(vary or [], sweep_file, settings)
+        results = run_sweep(
+            model,
+            out_dir,
+            vary=plan.vary,
+            overrides=plan.overrides,
+            cycles=cycles,
+            scheduler=scheduler,
+            workers=workers,
+            figures=figures,
+            progress=bar,
+        )
+    except ModelError as error:
+        raise fail(error) from None
+    finally:
+        bar.close()
+    table = results.table
+    counts = table["status"].value_counts(sort=False)  # in the order the cases come
+    order = sorted(counts.index, key=lambda status: status != SUCCESS)
+    tally = ", ".join(f"{counts[status]} {status}" for status in order)
+    skipped = f" ({len(results.skipped)} finished before)" if results.skipped else ""
+    out.print(f"{len(table)} cases{skipped}: {tally}", soft_wrap=True, highlight=False)
+    for _, row in table[table["status"] != SUCCESS].iterrows():
+        out.print(f"{row['case']}: {row['status']}: {row['error']}", **PLAIN)
+    out.print(f"table in {out_dir / 'sweep.csv'} and sweep.parquet", **PLAIN)
+    if results.interrupted:
+        err.print("interrupted: the table holds the cases finished so far", soft_wrap=True)
+    if results.failed:
+        raise typer.Exit(code=1)
+
+
+def life(
+    model: ModelPath,
+    cycles: Annotated[
+        int, typer.Option("--cycles", help="Driver cycles to reach.", show_default=False)
+    ],
+    out_dir: Annotated[Path, typer.Option("--out", help="Life-run folder.", show_default=False)],
+    overrides: Overrides = None,
+    resume: Annotated[
+        bool, typer.Option("--resume", help="Continue the interrupted run in OUT.")
+    ] = False,
+    settle_cycles: Annotated[
+        int, typer.Option("--settle-cycles", help="Cycles simulated before extrapolating.")
+    ] = 2,
+    measure_cycles: Annotated[
+        int, typer.Option("--measure-cycles", help="Cycles averaged for the wear per cycle.")
+    ] = 1,
+    steady_tolerance: Annotated[
+        float,
+        typer.Option(
+            "--steady-tolerance",
+            help="Steady: two groups of --measure-cycles wear alike, per sector, to this share "
+            "of the deepest.",
+        ),
+    ] = 0.05,
+    max_update_cycles: Annotated[
+        int, typer.Option("--max-update-cycles", help="Most cycles simulated per update.")
+    ] = 20,
+    max_change: Annotated[
+        str,
+        typer.Option(
+            "--max-change",
+            help="Largest depth an update adds to a sector: a length ('1 um') or a share of "
+            "the current clearance ('1%').",
+        ),
+    ] = "1%",
+    extrapolate: Annotated[
+        bool,
+        typer.Option("--extrapolate/--no-extrapolate", help="Off: simulate every cycle."),
+    ] = True,
+    feedback: Annotated[
+        bool | None,
+        typer.Option(
+            "--feedback/--no-feedback",
+            help="Worn profiles feed back into the contact (default: as the model says).",
+            show_default=False,
+        ),
+    ] = None,
+    max_growth: Annotated[
+        float,
+        typer.Option(
+            "--max-growth",
+            help="Stop when the clearance would grow by this share of the nominal (1: doubled).",
+        ),
+    ] = 1.0,
+    figures: Annotated[bool, typer.Option("--figures/--no-figures", help="Draw figures.")] = True,
+) -> None:
+    """Predict the wear of MODEL's clearance joints over many driver cycles.
+
+    Simulates a few cycles, extrapolates their wear over many (each update changing a
+    profile by at most --max-change), updates the joint geometry and repeats. OUT gets
+    life.csv (one row per update), profiles.csv, summary.json and figures/.
+    """
+    from ..model import ModelError
+    from ..status import SUCCESS
+    from ..studies.life.study import life as run_life
+
+    bar = ProgressBar("wearing", "{task.completed:,} / {task.total:,} cycles")
+    try:
+        results = run_life(
+            model,
+            out_dir,
+            cycles=cycles,
+            overrides=overrides or [],
+            settle_cycles=settle_cycles,
+            measure_cycles=measure_cycles,
+            steady_tolerance=steady_tolerance,
+            max_update_cycles=max_update_cycles,
+            max_change=max_change,
+            extrapolate=extrapolate,
+            feedback=feedback,
+            max_growth=max_growth,
+            resume=resume,
+            figures=figures,
+            progress=bar,
+        )
+    except ModelError as error:
+        raise fail(error) from None
+    finally:
+        bar.close()
+    summary = results.summary
+    unsteady = summary["unsteady_updates"]
+    out.print(
+        f"{summary['status']}: {summary['message']}; {summary['cycles_reached']:,} cycles in "
+        f"{summary['updates']} updates ({summary['simulated_cycles']:,} simulated"
+        f"{f', {unsteady} unsteady' if unsteady else ''}), {summary['wall_s']:.3g} s wall",
+        **PLAIN,
+    )
+    for name, joint in summary["clearance_joints"].items():
+        if "clearance_growth_m" in joint:
+            out.print(_life_line(name, joint), **PLAIN)
+    out.print(f"results in {out_dir}", **PLAIN)
+    if summary["status"] != SUCCESS:
+        raise typer.Exit(code=1)
+
+
+def _life_line(name: str, joint: dict) -> str:
+    """One line of a clearance joint's wear after a life run."""
+    at = joint["cycles_to_clearance_growth_50pct"]
+    half = f"at {at:,.0f} cycles" if at is not None else "not reached"
+    return (
+        f"{name}: max wear depth journal {joint['max_wear_depth_journal_m'] * 1e6:.4g} µm, "
+        f"bearing {joint['max_wear_depth_bearing_m'] * 1e6:.4g} µm; clearance grown by "
+        f"{joint['clearance_growth_m'] * 1e6:.4g} µm ({joint['clearance_growth_fraction']:.0%});"
+        f" 50% growth {half}"
+    )

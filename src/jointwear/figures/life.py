@@ -1,0 +1,109 @@
+"""Figures of a long-life wear run, from its tables (life.csv, profiles.csv).
+
+``life_wear.png``: maximum wear depth per surface and effective clearance growth, peak contact
+force and the driver's torque range, against cycles; ``life_profiles.png``: the wear profiles
+of every clearance joint at a few cycle counts, in polar form (angles in each surface's body
+frame, as in the wear table).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+from matplotlib import colormaps
+from matplotlib.figure import Figure  # figures without pyplot: no global backend switch
+
+from ..model import Model
+from ..results.clearance import UM
+from ..studies.life.files import FIGURE_FILES
+from ..studies.life.records import GROWTH_MARK, cycles_at, driver_columns
+
+PROFILE_COUNTS = 5  # profiles drawn: at about 1/5, 2/5, ... of the cycles reached
+PLOT_ORDER = ("journal", "bearing")  # the journal first, as in the paper's Figs. 8-10
+
+
+def plot_life_wear(model: Model, table: pd.DataFrame, driver: str) -> Figure:
+    """Wear depth and clearance growth [µm], peak contact force [kN], torque range, vs cycles."""
+    fig = Figure(figsize=(8.0, 9.0), layout="constrained")
+    depth, force, torque = fig.subplots(3, 1, sharex=True)
+    cycles = table["cycles"].to_numpy()
+    for joint in model.clearance_joints:
+        name = joint.name
+        for surface, style in zip(PLOT_ORDER, ("-", "--"), strict=True):
+            values = table[f"{name}.max_wear_depth_{surface}_m"] * UM
+            depth.plot(cycles, values, style, label=f"{name}: {surface}, deepest sector")
+        growth = table[f"{name}.clearance_growth_m"] * UM
+        line = depth.plot(cycles, growth, "-", lw=2.0, label=f"{name}: clearance growth")[0]
+        mark = GROWTH_MARK * joint.clearance.radial_clearance * UM
+        depth.axhline(mark, color=line.get_color(), ls=":", lw=1.0)
+        reached = cycles_at(table["cycles"], growth, mark)
+        text = f"{GROWTH_MARK:.0%} of c" + (f" at {reached:,.0f} cycles" if reached else "")
+        depth.annotate(
+            text, (cycles[0], mark), xytext=(2, 2), textcoords="offset points",
+            color=line.get_color(), fontsize="small",
+        )  # fmt: skip
+        if reached:
+            depth.plot(reached, mark, "o", color=line.get_color(), ms=4)
+        force.plot(cycles, table[f"{name}.max_contact_force_n"] / 1e3, ".-", label=name)
+    range_column = driver_columns(model, driver)[1]
+    torque.plot(cycles, table[range_column], ".-", color="k")
+    depth.set_ylabel("wear depth [µm]")
+    depth.legend(loc="upper left", fontsize="small")
+    force.set_ylabel("peak contact force\nof the measured cycles [kN]")
+    force.legend(loc="upper left", fontsize="small")
+    kind, unit = ("torque", "N m") if range_column.startswith("torque") else ("force", "N")
+    torque.set_ylabel(f"{kind} range of driver\n'{driver}', max - min [{unit}]")
+    torque.set_xlabel("cycles")
+    for ax in (depth, force, torque):
+        ax.grid(alpha=0.3)
+    fig.suptitle(f"{model.name}: wear over {int(cycles[-1]):,} cycles")
+    return fig
+
+
+def profile_updates(table: pd.DataFrame) -> list[int]:
+    """The updates whose profiles are drawn: nearest to 1/5, 2/5, ... of the cycles reached."""
+    cycles = table["cycles"].to_numpy()
+    targets = cycles[-1] * np.arange(1, PROFILE_COUNTS + 1) / PROFILE_COUNTS
+    rows = sorted({int(np.argmin(np.abs(cycles - target))) for target in targets})
+    return [int(table["update"].iloc[row]) for row in rows]
+
+
+def plot_life_profiles(model: Model, table: pd.DataFrame, profiles: pd.DataFrame) -> Figure:
+    """Wear depth per sector [µm] of both surfaces, polar, at a few cycle counts."""
+    joints = model.clearance_joints
+    updates = profile_updates(table)
+    colours = colormaps["viridis"](np.linspace(0.0, 0.9, len(updates)))
+    fig = Figure(figsize=(10.0, 5.0 * len(joints) + 0.5), layout="constrained")
+    for k, joint in enumerate(joints):
+        for s, surface in enumerate(PLOT_ORDER):
+            ax = fig.add_subplot(len(joints), 2, 2 * k + s + 1, projection="polar")
+            for update, colour in zip(updates, colours, strict=True):
+                rows = profiles[
+                    (profiles["update"] == update)
+                    & (profiles["joint"] == joint.name)
+                    & (profiles["surface"] == surface)
+                ].sort_values("sector")
+                theta = np.radians(np.append(rows["angle_deg"], rows["angle_deg"].iloc[0]))
+                depth = np.append(rows["depth_m"], rows["depth_m"].iloc[0]) * UM
+                label = f"{int(rows['cycles'].iloc[0]):,} cycles"
+                ax.plot(theta, depth, color=colour, lw=1.2, label=label)
+            ax.set_rlabel_position(67.5)
+            body = joint.bodies[0] if surface == "bearing" else joint.bodies[1]
+            ax.set_title(f"{joint.name}: {surface} ({body})\nwear depth [µm]", fontsize="medium")
+            if s == 0:
+                ax.legend(loc="lower left", bbox_to_anchor=(-0.25, -0.12), fontsize="small")
+    fig.suptitle(f"{model.name}: wear profiles as the cycles accumulate")
+    return fig
+
+
+def save_life_figures(
+    model: Model, driver: str, table: pd.DataFrame, profiles: pd.DataFrame, folder: Path
+) -> list[Path]:
+    """Write life_wear.png and life_profiles.png into ``folder``; return their paths."""
+    folder.mkdir(parents=True, exist_ok=True)
+    figures = (plot_life_wear(model, table, driver), plot_life_profiles(model, table, profiles))
+    for name, fig in zip(FIGURE_FILES, figures, strict=True):
+        fig.savefig(folder / name, dpi=150)
+    return [folder / name for name in FIGURE_FILES]

@@ -1,0 +1,85 @@
+"""Figures from a results folder: functions Results -> matplotlib Figure.
+
+Plots see only ``Results`` (time series with the model's own column names, and the model),
+never the kernel arrays.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pandas as pd
+from matplotlib.figure import Figure  # figures without pyplot: no global backend switch
+
+from ..results import Results
+
+CRANK_FUNCTIONS = ("constant_speed",)  # driver functions that turn a crank
+
+
+def crank_driver(results: Results) -> tuple[str, str, float] | None:
+    """(driver name, driven body, speed [rad/s]) of the first constant-speed angle driver."""
+    for driver in results.model.drivers:
+        if driver.type == "angle" and driver.function.type in CRANK_FUNCTIONS:
+            return driver.name, driver.body, driver.function.speed
+    return None
+
+
+def _last_turn(df: pd.DataFrame, speed: float) -> pd.DataFrame:
+    period = 2.0 * math.pi / abs(speed)
+    t_end = df["time"].iloc[-1]
+    return df[df["time"] >= t_end - period * (1.0 + 1e-9)]
+
+
+def plot_cycle(results: Results) -> Figure:
+    """Plot the undriven bodies' angular velocity and acceleration, and the driver torque.
+
+    Against the crank angle over the last crank turn (paper Fig. 7a-c, ideal case).
+    """
+    crank = crank_driver(results)
+    if crank is None:
+        raise ValueError("plot_cycle needs a constant-speed angle driver")
+    name, driven, speed = crank
+    turn = _last_turn(results.timeseries, speed)
+    angle = np.degrees(turn[f"phi_{driven}"].to_numpy()) % 360.0
+    order = np.argsort(angle)
+    bodies = [b.name for b in results.model.bodies if b.name != driven]
+    fig = Figure(figsize=(7.0, 8.0), layout="constrained")
+    axes = fig.subplots(3, 1, sharex=True)
+    for body in bodies:
+        axes[0].plot(angle[order], turn[f"omega_{body}"].to_numpy()[order], label=body)
+        axes[1].plot(angle[order], turn[f"alpha_{body}"].to_numpy()[order], label=body)
+    axes[2].plot(angle[order], turn[f"torque_{name}"].to_numpy()[order], color="k")
+    axes[0].set_ylabel("angular velocity [rad/s]")
+    axes[1].set_ylabel("angular acceleration [rad/s²]")
+    axes[2].set_ylabel(f"driver '{name}' torque [N m]")
+    axes[2].set_xlabel(f"{driven} angle [deg]")
+    axes[2].set_xlim(0.0, 360.0)
+    axes[2].set_xticks(np.arange(0, 361, 45))
+    axes[0].legend(loc="best")
+    for ax in axes:
+        ax.grid(alpha=0.3)
+        ax.axhline(0.0, color="0.6", lw=0.6)
+    fig.suptitle(f"{results.model.name}: one {driven} turn ({abs(speed):.4g} rad/s)")
+    return fig
+
+
+def plot_energy(results: Results) -> Figure:
+    """Kinetic, potential, contact and total energy, and the constraint violation, against time."""
+    df = results.timeseries
+    fig = Figure(figsize=(7.0, 6.0), layout="constrained")
+    top, bottom = fig.subplots(2, 1, sharex=True)
+    parts = [c for c in ("energy_kinetic", "energy_potential", "energy_contact") if c in df]
+    total = df[parts].sum(axis=1)
+    for column in parts:
+        top.plot(df["time"], df[column], label=column.removeprefix("energy_"))
+    top.plot(df["time"], total, label="total", color="k")
+    top.set_ylabel("energy [J]")
+    top.legend(loc="best")
+    bottom.semilogy(df["time"], np.maximum(df["constraint_violation"], 1e-18))
+    bottom.set_ylabel("constraint violation |Φ| [m]")
+    bottom.set_xlabel("time [s]")
+    for ax in (top, bottom):
+        ax.grid(alpha=0.3)
+    fig.suptitle(f"{results.model.name}: energy and constraint drift")
+    return fig

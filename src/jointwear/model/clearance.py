@@ -1,0 +1,228 @@
+"""Schema of a revolute joint's ``[joints.clearance]`` table (docs/model-format.md).
+
+The joint's first body carries the bearing (the hole, centred on the joint's first point),
+the second the journal (the pin, centred on its second point). Laws are chosen by name from
+the kernels' codes; each law's parameters are separate keys, and a key that the chosen law
+does not use is refused, so a model never carries a setting that silently does nothing.
+"""
+
+from typing import Annotated, NamedTuple
+
+from annotated_types import Ge, Gt, Le
+from pydantic import BeforeValidator, model_validator
+
+from ..kernels.laws.friction import FRICTION_LAWS as FRICTION_FAMILY
+from ..kernels.laws.normal import NORMAL_LAWS as NORMAL_FAMILY
+from ..kernels.laws.normal import (
+    effective_modulus,
+    effective_radius,
+    internal_cylinder_stiffness,
+)
+from ..kernels.laws.registry import Law, by_name
+from ..kernels.laws.wear import WEAR_LAWS as WEAR_FAMILY
+from ..kernels.laws.wear import hertz_line_contact
+from ..units import Length, Pressure, Speed, WearCoefficient
+from .tables import Number, Table, one_of
+
+NORMAL_LAWS = by_name(NORMAL_FAMILY)
+FRICTION_LAWS = by_name(FRICTION_FAMILY)
+WEAR_LAWS = by_name(WEAR_FAMILY)
+FAMILIES = {"normal": ("normal_law", NORMAL_LAWS), "friction": ("friction_law", FRICTION_LAWS),
+            "wear": ("wear_law", WEAR_LAWS)}  # fmt: skip
+WEAR_DISTRIBUTIONS = {"hertz": False, "peak": True}  # value: paper-style single sector
+
+PositiveLength = Annotated[Length, Gt(0)]
+Modulus = Annotated[Pressure, Gt(0)]
+Poisson = Annotated[Number, Ge(0), Le(0.5)]
+PositiveSpeed = Annotated[Speed, Gt(0)]
+
+
+def _users(laws: dict[str, Law]) -> dict[str, tuple[str, ...]]:
+    """{key: the laws of a family that read it}, from the family's registry."""
+    users: dict[str, tuple[str, ...]] = {}
+    for law in laws.values():
+        for key in law.keys:
+            users[key.name] = (*users.get(key.name, ()), law.name)
+    return users
+
+
+# Keys that only some laws use: {law key: {key: the laws that use it}}.
+_LAW_KEYS = {law_key: _users(laws) for law_key, laws in FAMILIES.values()}
+
+
+class PackedLaw(NamedTuple):
+    """A chosen law's code and its parameters as the kernels read them (SI)."""
+
+    code: int
+    parameters: tuple[float, ...]
+
+
+def law_parameters(clearance: "Clearance") -> dict[str, PackedLaw]:
+    """Per family ("normal", "friction", "wear"): the chosen law's code and packed parameters."""
+    packed = {}
+    for family, (law_key, laws) in FAMILIES.items():
+        law = laws[getattr(clearance, law_key)]
+        values = {key.name: getattr(clearance, key.name) for key in law.keys}
+        packed[family] = PackedLaw(law.code, law.pack(values))
+    return packed
+
+
+HERTZ_EXPONENT = 1.5  # the exponent the internal-cylinder stiffness formula is for
+
+
+def _plain_stiffness(value: object) -> object:
+    if isinstance(value, str):
+        raise ValueError(
+            f"{value!r}: give K as a plain number in SI units, N/m^exponent (units are not "
+            "read here: they depend on exponent)"
+        )
+    return value
+
+
+class Clearance(Table):
+    """A revolute joint with clearance: journal in bearing, contact, friction and wear (SI)."""
+
+    bearing_radius: PositiveLength
+    journal_radius: PositiveLength
+    width: PositiveLength
+    youngs_modulus: Modulus | tuple[Modulus, Modulus]  # both, or [bearing, journal]
+    poisson_ratio: Poisson | tuple[Poisson, Poisson]
+    normal_law: Annotated[str, one_of(NORMAL_LAWS, "normal law")] = "lankarani_nikravesh"
+    restitution_coefficient: Annotated[Number, Gt(0), Le(1)] | None = None
+    exponent: Annotated[Number, Gt(0)] = 1.5
+    contact_stiffness: Annotated[Number, Gt(0), BeforeValidator(_plain_stiffness)] | None = None
+    min_impact_speed: PositiveSpeed = 1e-3
+    contact_tolerance: PositiveLength = 1e-10
+    friction_law: Annotated[str, one_of(FRICTION_LAWS, "friction law")] = "ambrosio"
+    friction_coefficient: Annotated[Number, Ge(0)]
+    no_friction_speed: Annotated[Speed, Ge(0)] = 1e-4
+    full_friction_speed: PositiveSpeed = 1e-2
+    regularisation_speed: PositiveSpeed = 1e-4
+    static_friction_coefficient: Annotated[Number, Ge(0)] | None = None
+    stiction_speed: PositiveSpeed = 1e-4
+    transition_speed: PositiveSpeed = 1e-2
+    wear_law: Annotated[str, one_of(WEAR_LAWS, "wear law")] = "archard"
+    wear_coefficient: Annotated[WearCoefficient, Ge(0)] | None = None
+    dimensionless_wear_coefficient: Annotated[Number, Ge(0)] | None = None
+    hardness: Modulus | None = None
+    shear_strength: Modulus | None = None
+    journal_wear_share: Annotated[Number, Ge(0), Le(1)] = 0.5
+    wear_distribution: Annotated[str, one_of(WEAR_DISTRIBUTIONS, "wear distribution")] = "hertz"
+    wear_feedback: bool = True
+    sectors: Annotated[int, Ge(4), Le(100_000)] = 36
+
+    @model_validator(mode="after")
+    def _consistent(self) -> "Clearance":
+        problems = [*self._unused_keys(), *self._missing_keys()]
+        if self.journal_radius >= self.bearing_radius:
+            problems.append(
+                f"journal_radius {self.journal_radius * 1e3:.12g} mm must be smaller than "
+                f"bearing_radius {self.bearing_radius * 1e3:.12g} mm (the radial clearance is "
+                "their difference)"
+            )
+        elif self.contact_tolerance >= self.radial_clearance:
+            problems.append(
+                f"contact_tolerance {self.contact_tolerance:g} m must be much smaller than the "
+                f"radial clearance {self.radial_clearance:g} m (default 1e-10 m)"
+            )
+        ambrosio = self.friction_law == "ambrosio"
+        if ambrosio and self.full_friction_speed <= self.no_friction_speed:
+            problems.append("full_friction_speed must be larger than no_friction_speed")
+        if problems:
+            raise ValueError("; ".join(problems))
+        return self
+
+    def _unused_keys(self) -> list[str]:
+        lines = []  # a default value is not a setting (and model.json writes them all)
+        for law_key, users in _LAW_KEYS.items():
+            chosen = getattr(self, law_key)
+            for key, laws in users.items():
+                given = getattr(self, key) != Clearance.model_fields[key].default
+                if given and chosen not in laws:
+                    names = " or ".join(f"'{law}'" for law in laws)
+                    lines.append(
+                        f"{key} is used by {law_key} {names} only, and this joint's "
+                        f"{law_key} is '{chosen}'; remove it or choose another {law_key}"
+                    )
+        return lines
+
+    def _missing_keys(self) -> list[str]:
+        lines = []
+        if self.normal_law != "hertz" and self.restitution_coefficient is None:
+            lines.append(
+                f"normal_law '{self.normal_law}' needs restitution_coefficient (0 < c_e <= 1)"
+            )
+        if self.exponent != HERTZ_EXPONENT and self.contact_stiffness is None:
+            lines.append(
+                f"exponent {self.exponent:g} needs contact_stiffness [N/m^{self.exponent:g}]: "
+                f"the stiffness formula is for exponent {HERTZ_EXPONENT:g}"
+            )
+        if self.friction_law == "stick_slip" and self.static_friction_coefficient is None:
+            lines.append("friction_law 'stick_slip' needs static_friction_coefficient")
+        if self.wear_law == "reye" and self.shear_strength is None:
+            lines.append("wear_law 'reye' needs shear_strength (a pressure, e.g. '300 MPa')")
+        if self.wear_law == "archard":
+            by_hardness = (self.dimensionless_wear_coefficient, self.hardness)
+            if self.wear_coefficient is None and None in by_hardness:
+                lines.append(
+                    "wear_law 'archard' needs wear_coefficient (e.g. '8e-14 1/Pa'), or "
+                    "dimensionless_wear_coefficient together with hardness"
+                )
+            elif self.wear_coefficient is not None and by_hardness != (None, None):
+                lines.append(
+                    "give wear_coefficient, or dimensionless_wear_coefficient with hardness, "
+                    "not both"
+                )
+        return lines
+
+    def _pair(self, value: float | tuple[float, float]) -> tuple[float, float]:
+        return (value, value) if isinstance(value, float | int) else value
+
+    @property
+    def moduli(self) -> tuple[float, float]:
+        """Young's moduli of (bearing, journal) [Pa]."""
+        return self._pair(self.youngs_modulus)
+
+    @property
+    def poisson_ratios(self) -> tuple[float, float]:
+        """Poisson's ratios of (bearing, journal) [-]."""
+        return self._pair(self.poisson_ratio)
+
+    @property
+    def radial_clearance(self) -> float:
+        """Radial clearance c = R_B - R_J [m]."""
+        return self.bearing_radius - self.journal_radius
+
+    @property
+    def contact_modulus(self) -> float:
+        """E* [Pa] of the two materials."""
+        (e_b, e_j), (nu_b, nu_j) = self.moduli, self.poisson_ratios
+        return effective_modulus(e_b, nu_b, e_j, nu_j)
+
+    @property
+    def relative_radius(self) -> float:
+        """R* = R_B R_J / (R_B - R_J) [m]."""
+        return effective_radius(self.bearing_radius, self.journal_radius)
+
+    @property
+    def stiffness(self) -> float:
+        """K [N/m^exponent]: ``contact_stiffness`` if given, else the internal-cylinder formula."""
+        if self.contact_stiffness is not None:
+            return self.contact_stiffness
+        (e_b, e_j), (nu_b, nu_j) = self.moduli, self.poisson_ratios
+        return internal_cylinder_stiffness(
+            self.bearing_radius, self.journal_radius, e_b, nu_b, e_j, nu_j
+        )
+
+    @property
+    def archard_coefficient(self) -> float:
+        """Archard's dimensional k [1/Pa] (wear_coefficient, or K / H); 0 for Reye."""
+        if self.wear_law != "archard":
+            return 0.0
+        if self.wear_coefficient is not None:
+            return self.wear_coefficient
+        return self.dimensionless_wear_coefficient / self.hardness
+
+    def hertz_patch(self, force: float) -> tuple[float, float]:
+        """Half-width b [m] and peak pressure p_max [Pa] of the line contact under force [N]."""
+        return hertz_line_contact(force, self.relative_radius, self.contact_modulus, self.width)

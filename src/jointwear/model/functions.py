@@ -1,0 +1,70 @@
+"""Functions of time in the model file: constant speed, polynomial and harmonic tables.
+
+Drivers prescribe an angle or a distance with one of them; a force component or a torque
+is a constant quantity or a polynomial or harmonic table of it.
+"""
+
+from typing import Annotated, ClassVar, Generic, Literal, TypeVar
+
+from pydantic import BaseModel, Discriminator, Field, Tag
+
+from ..kernels.codes import FunctionKind
+from ..units import Angle, AngularSpeed, Force, Length, Speed, Torque
+from .errors import SCALAR_TAG
+from .tables import Number, Table
+
+_T = TypeVar("_T")
+_RateT = TypeVar("_RateT")
+
+
+class ConstantSpeed(Table, Generic[_RateT, _T]):
+    """f(t) = initial + speed t; `initial` None means the value at the initial pose guess."""
+
+    type: Literal["constant_speed"] = "constant_speed"
+    speed: _RateT
+    initial: _T | None = None
+
+
+class Polynomial(Table):
+    """f(t) = sum_k coefficients[k] t^k, SI coefficients."""
+
+    kind: ClassVar = FunctionKind.POLYNOMIAL
+    type: Literal["polynomial"] = "polynomial"
+    coefficients: Annotated[tuple[Number, ...], Field(min_length=1, max_length=8)]
+
+
+class Harmonic(Table, Generic[_T]):
+    """f(t) = offset + amplitude sin(angular_frequency t + phase)."""
+
+    kind: ClassVar = FunctionKind.HARMONIC
+    type: Literal["harmonic"] = "harmonic"
+    offset: _T = 0.0
+    amplitude: _T
+    angular_frequency: AngularSpeed
+    phase: Angle = 0.0
+
+
+def _tag(value: object) -> object:
+    if isinstance(value, dict):
+        return value.get("type")
+    return value.type if isinstance(value, BaseModel) else SCALAR_TAG
+
+
+def _quantity_or_function(quantity: object) -> object:
+    """Build the type: a constant `quantity`, or a polynomial or harmonic table of it."""
+    return Annotated[
+        Annotated[quantity, Tag(SCALAR_TAG)]
+        | Annotated[Polynomial, Tag("polynomial")]
+        | Annotated[Harmonic[quantity], Tag("harmonic")],
+        Discriminator(_tag),
+    ]
+
+
+ForceValue = _quantity_or_function(Force)
+TorqueValue = _quantity_or_function(Torque)
+AngleFunction = Annotated[
+    ConstantSpeed[AngularSpeed, Angle] | Polynomial | Harmonic[Angle], Field(discriminator="type")
+]
+DistanceFunction = Annotated[
+    ConstantSpeed[Speed, Length] | Polynomial | Harmonic[Length], Field(discriminator="type")
+]

@@ -1,0 +1,150 @@
+"""The schema of a model file (docs/model-format.md), and its loading.
+
+A validated :class:`Model` holds plain SI floats (tuples for vectors) and names; every
+user-input problem is reported as a :class:`ModelError` with one line per problem.
+"""
+
+import re
+import tomllib
+from collections.abc import Sequence
+from os import PathLike
+from pathlib import Path
+from typing import Annotated
+
+from pydantic import Field, ValidationError, model_validator
+
+from .errors import ModelError, from_validation_error
+from .overrides import apply_overrides
+from .references import reference_problems
+from .sections import (
+    Body,
+    Driver,
+    Event,
+    Ground,
+    Joint,
+    Load,
+    RevoluteJoint,
+    Solver,
+    TranslationalJoint,
+)
+from .tables import Table
+
+# The model ---------------------------------------------------------------------------------
+
+
+class Model(Table):
+    """A whole model file, validated, in SI units."""
+
+    name: Annotated[str, Field(min_length=1)]
+    description: str = ""
+    ground: Ground = Field(default_factory=Ground)
+    bodies: Annotated[tuple[Body, ...], Field(min_length=1)]
+    joints: tuple[Joint, ...] = ()
+    drivers: tuple[Driver, ...] = ()
+    forces: tuple[Load, ...] = ()
+    solver: Solver = Field(default_factory=Solver)
+    events: tuple[Event, ...] = ()
+
+    @model_validator(mode="after")
+    def _check_references(self) -> "Model":
+        problems = reference_problems(
+            self.ground, self.bodies, self.joints, self.drivers, self.forces, self.events
+        )
+        if problems:
+            raise ModelError(problems)
+        return self
+
+    @property
+    def body_names(self) -> tuple[str, ...]:
+        """Names of the moving bodies, in file order."""
+        return tuple(body.name for body in self.bodies)
+
+    def body(self, name: str) -> Body:
+        """Return the moving body called `name` (KeyError if there is none)."""
+        return _named(self.bodies, name)
+
+    def joint(self, name: str) -> RevoluteJoint | TranslationalJoint:
+        """Return the joint called `name` (KeyError if there is none)."""
+        return _named(self.joints, name)
+
+    @property
+    def clearance_joints(self) -> tuple["RevoluteJoint", ...]:
+        """The joints with clearance, in file order (the kernels' clearance table order)."""
+        return tuple(j for j in self.joints if getattr(j, "clearance", None) is not None)
+
+    @property
+    def has_clearance(self) -> bool:
+        """Whether any joint has clearance."""
+        return bool(self.clearance_joints)
+
+    def ideal(self) -> "Model":
+        """The same model with every clearance joint made ideal (journal centred)."""
+        joints = tuple(
+            joint.model_copy(update={"clearance": None})
+            if isinstance(joint, RevoluteJoint)
+            else joint
+            for joint in self.joints
+        )
+        return self.model_copy(update={"joints": joints})
+
+    def point(self, body: str, name: str) -> tuple[float, float]:
+        """Return point `name` of `body` [m]: global for ``"ground"``, else in the body frame."""
+        points = self.ground.points if body == "ground" else self.body(body).points
+        return points[name]
+
+
+def _named(items: Sequence, name: str):
+    for item in items:
+        if item.name == name:
+            return item
+    raise KeyError(name)
+
+
+# Loading ----------------------------------------------------------------------------------
+
+
+def parse_model(data: dict, name: str = "model") -> Model:
+    """Validate a model given as a dict (a parsed TOML file or a saved model.json).
+
+    Parameters
+    ----------
+    data
+        The model's tables, values as in the model file.
+    name
+        Model name used when `data` has no ``name``.
+
+    Raises
+    ------
+    ModelError
+        With one line per problem found.
+    """
+    if isinstance(data, dict):
+        data = {"name": name, **data}
+    try:
+        return Model.model_validate(data)
+    except ValidationError as error:
+        raise from_validation_error(error, data) from None
+
+
+def load_model(path: str | PathLike, overrides: Sequence[str] = ()) -> Model:
+    """Read a TOML model file, apply dotted ``path=value`` overrides, and validate it.
+
+    The model name defaults to the file name without its suffix.
+
+    Raises
+    ------
+    ModelError
+        If the file cannot be read, is not valid TOML, or describes an invalid model.
+    """
+    path = Path(path)
+    try:
+        data = tomllib.loads(path.read_bytes().decode())
+    except OSError as error:
+        raise ModelError([f"{path}: cannot read the file; {error.strerror}"]) from None
+    except UnicodeDecodeError:
+        raise ModelError([f"{path}: not UTF-8 text; a model file is TOML"]) from None
+    except tomllib.TOMLDecodeError as error:
+        where = re.fullmatch(r"(.*) \(at line (\d+), column (\d+)\)", str(error))
+        place, what = (f"{path}:{where[2]}:{where[3]}", where[1]) if where else (path, error)
+        raise ModelError([f"{place}: invalid TOML: {what}; fix the syntax there"]) from None
+    return parse_model(apply_overrides(data, overrides), name=path.stem)

@@ -1,0 +1,238 @@
+"""The sections of a model file: ground, bodies, joints, drivers, forces, solver, events.
+
+Each is a ``Table`` whose quantities are converted to SI floats as it is validated; the
+``Model`` (``schema``) holds them and checks the names they refer to (``references``).
+"""
+
+import math
+from typing import Annotated, ClassVar, Literal
+
+from annotated_types import Ge, Gt, Le
+from pydantic import AfterValidator, Field, Strict, ValidationInfo, field_validator, model_validator
+
+from ..kernels.codes import DriverKind, ForceKind, JointKind, Method
+from ..units import (
+    Acceleration2,
+    Angle,
+    AngularSpeed,
+    Damping,
+    Inertia,
+    Length,
+    Mass,
+    RotationalDamping,
+    RotationalStiffness,
+    Stiffness,
+    Time,
+    Vector2,
+    Velocity2,
+    to_si,
+)
+from .clearance import Clearance
+from .functions import AngleFunction, DistanceFunction, ForceValue, TorqueValue
+from .tables import Name, Number, Table, one_of
+
+INTEGRATORS: dict[str, Method] = {"dopri5": Method.DOPRI5, "abm": Method.ABM}
+MAX_OUTPUT_ROWS = 5e7  # about 16 GB of time series for a small mechanism
+MAX_WEAR_SNAPSHOTS = 10_000  # each holds every sector of every clearance joint
+
+
+# Ground, bodies, joints, drivers -----------------------------------------------------------
+
+
+class Ground(Table):
+    """Fixed points of the ground [m], global coordinates."""
+
+    points: dict[Name, Vector2] = Field(default_factory=dict)
+
+
+class Body(Table):
+    """A moving rigid body; `position`, `angle` and velocities are initial guesses."""
+
+    name: Name
+    mass: Annotated[Mass, Gt(0)]
+    inertia: Annotated[Inertia, Gt(0)]
+    position: Vector2
+    angle: Angle
+    velocity: Velocity2 = (0.0, 0.0)
+    angular_velocity: AngularSpeed = 0.0
+    points: dict[Name, Vector2] = Field(default_factory=dict)
+
+
+class _Joint(Table):
+    name: Name
+    bodies: tuple[str, str]
+    points: tuple[str, str]
+
+
+class RevoluteJoint(_Joint):
+    """Pin joining `points[0]` of `bodies[0]` and `points[1]` of `bodies[1]`.
+
+    Ideal without `clearance`; with it, `bodies[0]` has the bearing and `bodies[1]` the
+    journal, and the joint acts through contact forces instead of constraints.
+    """
+
+    kind: ClassVar = JointKind.REVOLUTE
+    type: Literal["revolute"] = "revolute"
+    clearance: Clearance | None = None
+
+
+def _nonzero(axis: tuple[float, float]) -> tuple[float, float]:
+    if math.hypot(*axis) == 0.0:
+        raise ValueError("the axis has zero length; give a direction, e.g. [1.0, 0.0]")
+    return axis
+
+
+class TranslationalJoint(_Joint):
+    """Ideal slider along `axis` (first body's frame, any non-zero length)."""
+
+    kind: ClassVar = JointKind.TRANSLATIONAL
+    type: Literal["translational"] = "translational"
+    axis: Annotated[tuple[Number, Number], AfterValidator(_nonzero)]
+
+
+class AngleDriver(Table):
+    """Prescribes the angle of `body` relative to `relative_to` [rad]."""
+
+    kind: ClassVar = DriverKind.ANGLE
+    type: Literal["angle"] = "angle"
+    name: Name
+    body: str
+    relative_to: str = "ground"
+    function: AngleFunction
+
+
+class DistanceDriver(Table):
+    """Prescribes the slide of translational joint `joint` [m]."""
+
+    kind: ClassVar = DriverKind.DISTANCE
+    type: Literal["distance"] = "distance"
+    name: Name
+    joint: str
+    function: DistanceFunction
+
+
+# Forces, solver, events ---------------------------------------------------------------------
+
+
+class Gravity(Table):
+    """Uniform gravitational acceleration [m/s^2] on every body."""
+
+    type: Literal["gravity"] = "gravity"
+    name: Name | None = None
+    acceleration: Acceleration2
+
+
+class PointForce(Table):
+    """Force [N] in global components at a named point of a body."""
+
+    kind: ClassVar = ForceKind.POINT_FORCE
+    type: Literal["point_force"] = "point_force"
+    name: Name | None = None
+    body: str
+    point: str
+    force: tuple[ForceValue, ForceValue]
+
+
+class AppliedTorque(Table):
+    """Torque [N m] on a body, counter-clockwise positive."""
+
+    kind: ClassVar = ForceKind.TORQUE
+    type: Literal["torque"] = "torque"
+    name: Name | None = None
+    body: str
+    torque: TorqueValue
+
+
+class SpringDamper(Table):
+    """Translational spring-damper along the line between two points."""
+
+    kind: ClassVar = ForceKind.SPRING_DAMPER
+    type: Literal["spring_damper"] = "spring_damper"
+    name: Name | None = None
+    bodies: tuple[str, str]
+    points: tuple[str, str]
+    stiffness: Annotated[Stiffness, Ge(0)]
+    damping: Annotated[Damping, Ge(0)] = 0.0
+    free_length: Annotated[Length, Ge(0)]
+
+
+class RotationalSpringDamper(Table):
+    """Rotational spring-damper on the relative angle phi_2 - phi_1."""
+
+    kind: ClassVar = ForceKind.ROTATIONAL_SPRING_DAMPER
+    type: Literal["rotational_spring_damper"] = "rotational_spring_damper"
+    name: Name | None = None
+    bodies: tuple[str, str]
+    stiffness: Annotated[RotationalStiffness, Ge(0)]
+    damping: Annotated[RotationalDamping, Ge(0)] = 0.0
+    free_angle: Angle = 0.0
+
+
+Joint = Annotated[RevoluteJoint | TranslationalJoint, Field(discriminator="type")]
+Driver = Annotated[AngleDriver | DistanceDriver, Field(discriminator="type")]
+Load = Annotated[
+    Gravity | PointForce | AppliedTorque | SpringDamper | RotationalSpringDamper,
+    Field(discriminator="type"),
+]
+PositiveTime = Annotated[Time, Gt(0)]
+
+
+class Solver(Table):
+    """Integration and output settings; times in [s], rates in [1/s]."""
+
+    integrator: Annotated[str, one_of(INTEGRATORS, "integrator")] = "abm"
+    rtol: Annotated[Number, Gt(0)] = 1e-6
+    atol: Annotated[Number, Gt(0)] = 1e-8
+    min_step: PositiveTime = 1e-12
+    max_step: PositiveTime = 1e-3
+    initial_step: PositiveTime = 1e-6
+    baumgarte_alpha: Annotated[Number, Ge(0)] = 5.0
+    baumgarte_beta: Annotated[Number, Ge(0)] = 5.0
+    output_interval: PositiveTime = 1e-4
+    wear_snapshot_interval: PositiveTime | None = None  # default: a fifth of t_end
+    t_end: PositiveTime = 1.0
+    max_steps: Annotated[int, Strict(), Gt(0), Le(2**62)] = 10_000_000
+    assembly_tolerance: Annotated[Length, Gt(0)] = 1e-10
+
+    @model_validator(mode="after")
+    def _steps_in_order(self) -> "Solver":
+        if not self.min_step <= self.initial_step <= self.max_step:
+            raise ValueError(
+                f"min_step {self.min_step:g}, initial_step {self.initial_step:g}, max_step "
+                f"{self.max_step:g} [s] are out of order; need min_step <= initial_step <= max_step"
+            )
+        snapshots = self.t_end / (self.wear_snapshot_interval or self.t_end)
+        if snapshots > MAX_WEAR_SNAPSHOTS:
+            raise ValueError(
+                f"t_end / wear_snapshot_interval asks for {snapshots:.3g} wear snapshots; at "
+                f"most {MAX_WEAR_SNAPSHOTS} are allowed; raise wear_snapshot_interval"
+            )
+        rows = self.t_end / self.output_interval
+        if rows > MAX_OUTPUT_ROWS:
+            raise ValueError(
+                f"t_end / output_interval asks for {rows:.3g} output rows; at most "
+                f"{MAX_OUTPUT_ROWS:.0e} are allowed; raise output_interval"
+            )
+        return self
+
+    @property
+    def method(self) -> Method:
+        """Integrator code for the kernels."""
+        return INTEGRATORS[self.integrator]
+
+
+class Event(Table):
+    """Crossing of a body's x or y [m] or phi [rad] through `value`."""
+
+    name: Name
+    body: str
+    coordinate: Literal["x", "y", "phi"]
+    value: float
+    direction: Literal["rising", "falling", "any"] = "any"
+
+    @field_validator("value", mode="before")
+    @classmethod
+    def _value_units(cls, value: object, info: ValidationInfo) -> float:
+        if "coordinate" not in info.data:
+            return 0.0  # the coordinate is invalid and reported; its value cannot be judged
+        return to_si(value, "[]" if info.data["coordinate"] == "phi" else "[length]")

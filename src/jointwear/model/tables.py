@@ -1,0 +1,52 @@
+"""Building blocks of the model-file schema: the table base class and shared field types."""
+
+import re
+from typing import Annotated
+
+from pydantic import AfterValidator, AllowInfNan, BaseModel, ConfigDict, Strict, model_validator
+
+from .errors import did_you_mean, unknown
+
+
+def one_of(table: dict[str, object], what: str) -> AfterValidator:
+    """Validator of a name that must be a key of `table` (``what`` names it in errors)."""
+
+    def check(value: str) -> str:
+        if value not in table:
+            raise ValueError(unknown(what, value, list(table), f"known {what}s"))
+        return value
+
+    return AfterValidator(check)
+
+
+def _check_name(name: str) -> str:
+    if not re.fullmatch(r"[A-Za-z][A-Za-z0-9_]*", name):
+        raise ValueError(
+            f"{name!r} is not a valid name; use letters, digits and _, starting with a letter"
+        )
+    if name == "ground":
+        raise ValueError("'ground' is reserved; choose another name")
+    return name
+
+
+Name = Annotated[str, AfterValidator(_check_name)]
+Number = Annotated[float, Strict(), AllowInfNan(False)]
+
+
+class Table(BaseModel):
+    """A table of the model file: immutable, unknown keys refused."""
+
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+    @model_validator(mode="before")
+    @classmethod
+    def _known_keys(cls, data: object) -> object:
+        if isinstance(data, dict):
+            extra = [key for key in data if key not in cls.model_fields]
+            if extra:
+                hint = did_you_mean(extra[0], cls.model_fields) if len(extra) == 1 else ""
+                raise ValueError(
+                    f"unknown key{'s' * (len(extra) > 1)} {', '.join(map(repr, extra))}; "
+                    f"known keys are {', '.join(cls.model_fields)}{hint}"
+                )
+        return data

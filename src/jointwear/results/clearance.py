@@ -1,0 +1,116 @@
+"""Tables and summary figures of a run's clearance joints, from the loop's arrays.
+
+- wear profiles, one row per joint, surface and sector: ``joint, surface, sector,
+  angle_deg, depth_m`` (``angle_deg`` is the sector's centre in the surface's body frame);
+  the snapshots add the time they were taken, ``time_s``, in front;
+- impacts (contact onsets): ``time_s, joint, penetration_velocity_m_s, bearing_angle_deg,
+  journal_angle_deg, penetration_m`` (the last shows how closely the onset was located: it
+  lies between the contact tolerance and twice that);
+- per joint, the figures ``summary.json`` reports under ``clearance_joints``.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pandas as pd
+from numpy.typing import NDArray
+
+from ..kernels.elements import journal as cs
+from ..model import Model
+
+SURFACES = ("bearing", "journal")
+UM = 1e6  # micrometres per metre, for messages and figures
+WEAR_COLUMNS = ["joint", "surface", "sector", "angle_deg", "depth_m"]
+IMPACT_COLUMNS = [
+    "time_s",
+    "joint",
+    "penetration_velocity_m_s",
+    "bearing_angle_deg",
+    "journal_angle_deg",
+    "penetration_m",
+]
+
+
+def clearance_joint_names(model: Model) -> list[str]:
+    """Names of the clearance joints, in the order of the kernels' clearance table."""
+    return [joint.name for joint in model.clearance_joints]
+
+
+def wear_table(model: Model, wear: NDArray[np.float64]) -> pd.DataFrame:
+    """Long table of the wear depths ``wear[k, surface, sector]`` [m]."""
+    rows = []
+    for k, joint in enumerate(model.clearance_joints):
+        n = joint.clearance.sectors
+        centres = (np.arange(n) + 0.5) * 360.0 / n
+        for s, surface in enumerate(SURFACES):
+            for i in range(n):
+                rows.append((joint.name, surface, i, centres[i], wear[k, s, i]))
+    return pd.DataFrame(rows, columns=WEAR_COLUMNS)
+
+
+def snapshot_table(
+    model: Model, times: NDArray[np.float64], snapshots: NDArray[np.float64], taken: int
+) -> pd.DataFrame:
+    """The wear snapshots taken so far, each with its time ``time_s`` [s]."""
+    tables = [wear_table(model, snapshots[i]).assign(time_s=times[i]) for i in range(taken)]
+    if not tables:
+        return pd.DataFrame(columns=["time_s", *WEAR_COLUMNS])
+    table = pd.concat(tables, ignore_index=True)
+    return table[["time_s", *WEAR_COLUMNS]]
+
+
+def impact_rows(
+    names: list[str], time: NDArray, joint: NDArray, info: NDArray, count: int
+) -> list[tuple]:
+    """Rows of the impact table from the loop's impact log (``count`` entries)."""
+    return [
+        (
+            float(time[i]),
+            names[joint[i]],
+            float(info[i, cs.IMPACT_SPEED]),
+            math.degrees(info[i, cs.IMPACT_THETA_B]),
+            math.degrees(info[i, cs.IMPACT_THETA_J]),
+            float(info[i, cs.IMPACT_DELTA]),
+        )
+        for i in range(count)
+    ]
+
+
+def joint_summaries(
+    model: Model, totals: NDArray[np.float64], wear: NDArray[np.float64], duration: float
+) -> dict[str, dict]:
+    """Per clearance joint: contact, impact, wear and energy figures (SI units in the keys).
+
+    ``duration`` [s] is the simulated time the totals were gathered over.
+    """
+    summaries = {}
+    for k, joint in enumerate(model.clearance_joints):
+        c = joint.clearance
+        row = totals[k]
+        entry = {
+            "radial_clearance_m": c.radial_clearance,
+            "max_contact_force_n": row[cs.T_MAX_FN],
+            "contact_time_fraction": row[cs.T_CONTACT_TIME] / duration if duration else 0.0,
+            "impacts": int(row[cs.T_IMPACTS]),
+            "max_penetration_m": row[cs.T_MAX_DELTA],
+            "worn_volume_m3": row[cs.T_WORN_VOLUME],
+            "sliding_distance_m": row[cs.T_SLIDING],
+            "energy_dissipated_damping_j": row[cs.T_DAMPING_ENERGY],
+            "energy_dissipated_friction_j": row[cs.T_FRICTION_ENERGY],
+        }
+        for s, surface in enumerate(SURFACES):
+            depths = wear[k, s, : c.sectors]
+            peak = int(np.argmax(depths))
+            worn = depths[peak] > 0.0
+            entry[f"max_wear_depth_{surface}_m"] = float(depths[peak])
+            entry[f"max_wear_angle_{surface}_deg"] = (
+                (peak + 0.5) * 360.0 / c.sectors if worn else None
+            )
+        summaries[joint.name] = {key: _plain(value) for key, value in entry.items()}
+    return summaries
+
+
+def _plain(value: object) -> object:
+    return float(value) if isinstance(value, np.floating) else value

@@ -1,0 +1,56 @@
+"""How a run, a sweep case or a life run ended: one vocabulary, in lowercase.
+
+These are the ``status`` values of ``summary.json``, ``case.json``, ``sweep.csv`` and a life
+run's ``summary.json``. A run's status is the name of the kernels' ``Status`` code in lowercase
+(``status_name``: ``success``, ``non_finite``, ``singular``, ``max_steps``, ``interrupted``);
+a sweep case adds ``error`` and ``not_run``, a life run ``failed``, ``worn_through`` and
+``clearance_limit``. Everything but ``success`` means the work did not get to its end.
+"""
+
+from .kernels.codes import Status
+
+__all__ = [
+    "CLEARANCE_LIMIT",
+    "ERROR",
+    "FAILED",
+    "INTERRUPTED",
+    "NOT_RUN",
+    "SUCCESS",
+    "WORN_THROUGH",
+    "Status",
+    "status_message",
+    "status_name",
+]
+
+
+def status_name(status: Status) -> str:
+    """The name of a run status in files and messages: ``Status.MAX_STEPS`` -> ``max_steps``."""
+    return status.name.lower()
+
+
+# A run (``simulate``), and so also a sweep case or a life run
+SUCCESS = status_name(Status.SUCCESS)  # reached its end
+INTERRUPTED = status_name(Status.INTERRUPTED)  # Ctrl-C or SIGTERM; what was done is kept
+# A sweep case
+ERROR = "error"  # the case raised (an invalid model, a crash); its error column says what
+NOT_RUN = "not_run"  # the sweep stopped before the case ran
+# A life run
+FAILED = "failed"  # one of its simulated runs did not succeed
+WORN_THROUGH = "worn_through"  # a journal would be worn through its radius
+CLEARANCE_LIMIT = "clearance_limit"  # a clearance would grow past max_growth
+
+_MESSAGES = {
+    Status.RUNNING: "stopped between chunks",
+    Status.SUCCESS: "reached the end time",
+    Status.NON_FINITE: "the state became non-finite (NaN or inf) at the minimum step; check "
+    "forces and stiffness, or try tighter tolerances or a smaller solver.max_step",
+    Status.SINGULAR: "the constraint Jacobian became singular (a dead-centre or lock-up "
+    "position); check the geometry and the drivers",
+    Status.MAX_STEPS: "solver.max_steps was reached; raise it or loosen the tolerances",
+    Status.INTERRUPTED: "interrupted by the user; the results hold what was computed so far",
+}
+
+
+def status_message(status: Status) -> str:
+    """What a run status means, and what to try."""
+    return _MESSAGES[status]

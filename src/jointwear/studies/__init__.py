@@ -1,0 +1,1 @@
+"""Studies built on ``simulate``: parameter sweeps (``sweep``) and long-life wear (``life``)."""

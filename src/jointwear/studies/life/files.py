@@ -1,0 +1,197 @@
+"""The folder of a long-life wear run, and its checkpoint.
+
+``life.csv`` and ``profiles.csv`` grow by the rows of every update; after them the checkpoint
+is written: ``checkpoint/state_<update>.npz`` (the ``RunState`` to go on from) and then
+``checkpoint/checkpoint.json`` (update, cycles, wall time, that state's file name, and the
+settings and resolved model the run was started with), each replaced at once. A run stopped
+at any point is continued from the last complete checkpoint: the rows written after it are
+dropped and the same sequence of runs follows, from the same states.
+"""
+
+from __future__ import annotations
+
+import csv
+import json
+from dataclasses import dataclass
+from pathlib import Path
+
+import pandas as pd
+
+from ...io import check_folder, write_atomic, write_text
+from ...model import ModelError
+from ...results.clearance import WEAR_COLUMNS
+from ...results.run_state import RunState, load_run_state
+
+TABLE = "life.csv"
+PROFILES = "profiles.csv"
+SUMMARY = "summary.json"
+MODEL = "model.json"
+FIGURES = "figures"
+FIGURE_FILES = ("life_wear.png", "life_profiles.png")  # what figures.life writes there
+CHECKPOINTS = "checkpoint"
+CHECKPOINT = "checkpoint.json"
+PROFILE_COLUMNS = ["update", "cycles", *WEAR_COLUMNS]
+
+
+@dataclass(frozen=True)
+class Checkpoint:
+    """Where a life run stands after an update.
+
+    Attributes
+    ----------
+    update
+        Number of the last update (0: the settling cycles, or nothing yet without a state).
+    cycles
+        Cycles so far, simulated and extrapolated.
+    simulated_cycles
+        Cycles simulated so far.
+    wall_s
+        Wall time spent so far, over every session of the run [s].
+    state
+        The state to go on from (profiles updated); None before the first run.
+    """
+
+    update: int
+    cycles: int
+    simulated_cycles: int
+    wall_s: float
+    state: RunState | None
+
+
+def start_folder(folder: Path, columns: list[str], record: dict) -> None:
+    """Make ``folder`` a fresh life-run folder: earlier outputs removed, empty tables, model.
+
+    ``record`` (settings and resolved model) is kept in the checkpoint, for ``--resume``.
+    """
+    check_folder(folder)
+    (folder / CHECKPOINTS).mkdir(parents=True, exist_ok=True)
+    (folder / CHECKPOINTS / CHECKPOINT).unlink(missing_ok=True)  # first: it names the states
+    (folder / SUMMARY).unlink(missing_ok=True)
+    for name in FIGURE_FILES:  # an earlier run's: never mix two runs
+        (folder / FIGURES / name).unlink(missing_ok=True)
+    for old in (folder / CHECKPOINTS).glob("state_*.npz"):
+        old.unlink()
+    _write_rows(folder / TABLE, columns, [])
+    _write_rows(folder / PROFILES, PROFILE_COLUMNS, [])
+    write_text(folder / MODEL, json.dumps(record["model"], indent=2))
+    save_checkpoint(folder, Checkpoint(0, 0, 0, 0.0, None), record)
+
+
+def append_update(folder: Path, row: list, profiles: list[list]) -> None:
+    """Add an update's row to life.csv and its profiles to profiles.csv."""
+    for name, rows in ((TABLE, [row]), (PROFILES, profiles)):
+        with open(folder / name, "a", newline="") as f:
+            csv.writer(f).writerows(rows)
+
+
+def save_checkpoint(folder: Path, point: Checkpoint, record: dict) -> None:
+    """Write the checkpoint: the state's file first, then the JSON naming it."""
+    state = None
+    if point.state is not None:
+        state = f"state_{point.update:06d}.npz"
+        point.state.save(folder / CHECKPOINTS / state)
+    data = {
+        "update": point.update,
+        "cycles": point.cycles,
+        "simulated_cycles": point.simulated_cycles,
+        "wall_s": point.wall_s,
+        "state": state,
+        **record,
+    }
+    write_text(folder / CHECKPOINTS / CHECKPOINT, json.dumps(data, indent=2))
+    for old in (folder / CHECKPOINTS).glob("state_*.npz"):
+        if old.name != state:
+            old.unlink()
+
+
+def load_checkpoint(folder: Path, record: dict) -> Checkpoint:
+    """The last checkpoint of the run in ``folder``, its tables cut back to it.
+
+    Raises
+    ------
+    ModelError
+        If ``folder`` holds no life run, a damaged one, or one started with other settings
+        (but for a larger ``max_growth``) or another model.
+    """
+    path = folder / CHECKPOINTS / CHECKPOINT
+    try:
+        data = json.loads(path.read_text())
+    except (OSError, ValueError):
+        where = f"{CHECKPOINTS}/{CHECKPOINT}"
+        problem = f"out: {folder} holds no life run to resume (no readable {where}); "
+        raise ModelError([problem + "run without --resume to start one"]) from None
+    try:
+        problems = _differences(folder, data, json.loads(json.dumps(record)))
+        counts = [data[key] for key in ("update", "cycles", "simulated_cycles", "wall_s")]
+        state_file = data["state"]
+    except (AttributeError, KeyError, TypeError) as error:
+        raise _damaged(folder, error) from None
+    if problems:
+        raise ModelError(problems)
+    try:
+        for name in (TABLE, PROFILES):
+            _cut(folder / name, counts[0] if state_file else -1)
+        state = load_run_state(folder / CHECKPOINTS / state_file) if state_file else None
+    except Exception as error:  # whatever a damaged table or state file raises
+        raise _damaged(folder, error) from None
+    return Checkpoint(*counts, state)
+
+
+def _differences(folder: Path, data: dict, given: dict) -> list[str]:
+    """What keeps the run recorded in ``data`` from being continued with ``given``."""
+    problems = []
+    for key, value in data["settings"].items():
+        new = given["settings"].get(key)
+        if new == value or (key == "max_growth" and new > value):  # a larger limit: it goes on
+            continue
+        problems.append(
+            f"{key}: {new!r} differs from the {value!r} the run in {folder} was started with; "
+            "give the same settings to resume (max_growth may be larger), or start afresh "
+            "without --resume"
+        )
+    if data["model"] != given["model"]:
+        problems.append(
+            f"model: the model (after --set) differs from the one the run in {folder} was "
+            "started with (its model.json); give the same model and --set values to resume, "
+            "or start afresh without --resume"
+        )
+    return problems
+
+
+def _damaged(folder: Path, error: Exception) -> ModelError:
+    problem = f"out: the life run in {folder} is damaged and cannot be resumed ({error!r}); "
+    return ModelError([problem + "start afresh without --resume"])
+
+
+def read_tables(folder: Path) -> tuple[pd.DataFrame, pd.DataFrame]:
+    """life.csv and profiles.csv, numbers read back exactly."""
+    return tuple(pd.read_csv(folder / name) for name in (TABLE, PROFILES))
+
+
+def write_summary(folder: Path, summary: dict) -> None:
+    """Write summary.json, whole or not at all."""
+    write_text(folder / SUMMARY, json.dumps(summary, indent=2))
+
+
+def _cut(path: Path, update: int) -> None:
+    """Keep the header and the whole rows of updates up to ``update`` (first column).
+
+    A row cut short by a crash while it was written is not whole.
+    """
+    with open(path, newline="") as f:
+        rows = list(csv.reader(f))
+    if not rows:
+        raise ValueError(f"{path.name} has lost its header")
+    kept = [row for row in rows[1:] if len(row) == len(rows[0]) and int(row[0]) <= update]
+    if len(kept) < len(rows) - 1:
+        _write_rows(path, rows[0], kept)
+
+
+def _write_rows(path: Path, header: list[str], rows: list[list]) -> None:
+    def write(temporary: Path) -> None:
+        with open(temporary, "w", newline="") as f:
+            writer = csv.writer(f)
+            writer.writerow(header)
+            writer.writerows(rows)
+
+    write_atomic(path, write)

@@ -1,0 +1,168 @@
+"""What a long-life wear run is asked to do: its settings, and the cycle it counts.
+
+A cycle is the period of the model's time functions: an angle driver at constant speed
+turns once in 2 pi / speed, a harmonic function repeats after 2 pi / angular frequency;
+constant values fit any period. The cycle is the longest of these periods, and every other
+must divide it; a function that never repeats (a polynomial in time, a slide at constant
+speed) has no cycle, and is refused.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from ...model import Model, ModelError
+from ...model.functions import ConstantSpeed, Harmonic, Polynomial
+from ...units import to_si
+
+PERIOD_RTOL = 1e-9  # periods whose ratio is this close to a whole number divide each other
+
+
+@dataclass(frozen=True)
+class LifeSettings:
+    """How a life run extrapolates (``life`` documents each setting)."""
+
+    cycles: int
+    settle_cycles: int = 2
+    measure_cycles: int = 1
+    steady_tolerance: float = 0.05
+    max_update_cycles: int = 20
+    max_change: str | float = "1%"
+    extrapolate: bool = True
+    feedback: bool | None = None
+    max_growth: float = 1.0
+
+    def problems(self) -> list[str]:
+        """One line per invalid setting (empty if all are fine)."""
+        lines = []
+        for name, least in (("cycles", 1), ("settle_cycles", 0), ("measure_cycles", 1)):
+            if not _whole(getattr(self, name), least):
+                lines.append(f"{name}: {getattr(self, name)!r} is not a whole number >= {least}")
+        least = 2 * self.measure_cycles if _whole(self.measure_cycles, 1) else 2
+        if not _whole(self.max_update_cycles, least):
+            lines.append(
+                f"max_update_cycles: {self.max_update_cycles!r} is not a whole number >= {least}"
+                " (twice measure_cycles: two groups of them are compared)"
+            )
+        tolerance = self.steady_tolerance
+        if not _number(tolerance) or not 0.0 < tolerance < 1.0:
+            lines.append(
+                f"steady_tolerance: {tolerance!r} is not a number between 0 and 1; give the "
+                "share of the deepest sector's wear by which two steady cycles may differ"
+            )
+        try:
+            self.change_bound(0.0)
+        except ValueError as error:
+            lines.append(f"max_change: {error}")
+        growth = self.max_growth
+        if not _number(growth) or not growth > 0:
+            lines.append(
+                f"max_growth: {growth!r} is not a positive number; give the clearance growth "
+                "at which to stop as a share of the nominal clearance (1.0: doubled)"
+            )
+        return lines
+
+    def change_bound(self, clearance: float) -> float:
+        """Largest depth [m] an update may add, for a joint of current clearance [m]."""
+        text = self.max_change
+        if isinstance(text, str) and text.strip().endswith("%"):
+            try:
+                share = float(text.strip().removesuffix("%")) / 100.0
+            except ValueError:
+                share = math.nan
+            if not 0.0 < share <= 1.0:
+                raise ValueError(f"{text!r} is not a percentage in (0, 100]; e.g. '2%'")
+            return share * clearance
+        try:
+            depth = to_si(text, "[length]")
+        except ValueError as error:
+            raise ValueError(f"{error}, or a share of the clearance, e.g. '2%'") from None
+        if not depth > 0.0:
+            raise ValueError(f"{text!r} is not a positive depth; e.g. '1 um', or '2%'")
+        return depth
+
+
+def _number(value: object) -> bool:
+    return isinstance(value, int | float) and not isinstance(value, bool)
+
+
+def _whole(value: object, least: int) -> bool:
+    return isinstance(value, int) and not isinstance(value, bool) and value >= least
+
+
+def cycle_driver(model: Model) -> tuple[str, float]:
+    """The driver whose torque (or force) a life run follows, and the cycle period [s].
+
+    Raises
+    ------
+    ModelError
+        If a driver or load never repeats, the periods do not fit one cycle, or no driver
+        has a period.
+    """
+    periods: dict[str, float] = {}
+    drivers: list[str] = []  # those with a period, in file order
+    problems = []
+    functions = [(f"drivers[{i}]", d.function, d.type, d.name) for i, d in enumerate(model.drivers)]
+    for i, load in enumerate(model.forces):
+        values = load.force if load.type == "point_force" else (getattr(load, "torque", 0.0),)
+        functions += [(f"forces[{i}]", value, "load", None) for value in values]
+    for label, function, kind, driver in functions:
+        period = _period(function, kind)
+        if period is None:
+            problems.append(
+                f"{label}: a {function.type} function of time never repeats; a life run needs "
+                "periodic drivers and loads: angle drivers at constant_speed, harmonic "
+                "functions or constants"
+            )
+        elif period > 0.0:
+            periods[label] = period
+            drivers += [driver] if driver else []
+    if not problems and not drivers:
+        problems.append(
+            "drivers: a life run counts the cycles of a periodic driver (an angle driver at "
+            "constant_speed, or a harmonic function); this model has none"
+        )
+    if problems:
+        raise ModelError(problems)
+    cycle = max(periods.values())
+    for label, period in periods.items():
+        ratio = cycle / period
+        if abs(ratio - round(ratio)) > PERIOD_RTOL * ratio:
+            problems.append(
+                f"{label}: its period {period:.6g} s does not divide the cycle {cycle:.6g} s "
+                "of the longest period; a life run needs one cycle for the whole model"
+            )
+    if problems:
+        raise ModelError(problems)
+    return drivers[0], cycle
+
+
+def _period(function: object, kind: str) -> float | None:
+    """Period [s] of a time function; 0 for a constant, None if it never repeats."""
+    if isinstance(function, ConstantSpeed):
+        if function.speed == 0.0:
+            return 0.0
+        return 2.0 * math.pi / abs(function.speed) if kind == "angle" else None
+    if isinstance(function, Polynomial):
+        return 0.0 if not any(function.coefficients[1:]) else None
+    if isinstance(function, Harmonic):
+        if function.angular_frequency == 0.0 or function.amplitude == 0.0:
+            return 0.0
+        return 2.0 * math.pi / abs(function.angular_frequency)
+    return 0.0  # a constant value
+
+
+def with_feedback(model: Model, feedback: bool | None) -> Model:
+    """``model`` with every clearance joint's ``wear_feedback`` set (None: unchanged)."""
+    if feedback is None:
+        return model
+    joints = tuple(
+        joint.model_copy(
+            update={"clearance": joint.clearance.model_copy(update={"wear_feedback": feedback})}
+        )
+        if getattr(joint, "clearance", None) is not None
+        else joint
+        for joint in model.joints
+    )
+    return model.model_copy(update={"joints": joints})

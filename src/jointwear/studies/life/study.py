@@ -1,0 +1,211 @@
+"""Long-life wear: simulate a few steady cycles, extrapolate their wear, update, repeat.
+
+Simulating a million cycles directly is out of reach, and not needed: one cycle's wear is
+tiny against the clearance, so the dynamics change only slowly as the surfaces wear. After
+S. Mukras, N.H. Kim, N.A. Mauntler, T.L. Schmitz and W.G. Sawyer, "Analysis of planar
+multibody systems with revolute joint wear", Wear 268 (2010) 643-652, a life run
+
+1. simulates ``settle_cycles`` cycles from the assembled start (the start-up transient);
+2. simulates cycles one after another from where the last run ended, on the current worn
+   profiles, until the mean wear of the last ``measure_cycles`` agrees with that of the
+   ``measure_cycles`` before them (to ``steady_tolerance``), and takes it as the wear of one
+   cycle. So it simulates two cycles at least: a jump in the profiles starts a transient,
+   and a transient extrapolated as if it lasted the whole update distorts the result (the
+   paper's four-bar passes through short bursts of chaotic impacts, which one measured
+   cycle per update stretches over much of its life). If ``max_update_cycles`` cycles do
+   not settle, the motion is taken as chaotic and the mean wear of their second half (past
+   the transient) as the wear of one cycle;
+3. extrapolates it over as many further cycles as keep the largest depth the update (its
+   simulated and extrapolated cycles) adds to any sector of any surface within
+   ``max_change`` (a depth, or a share of the joint's current clearance, nominal plus
+   growth), never past ``cycles`` in all; both surfaces' profiles
+   are updated, and the next run starts from the last state with them (``RunState.with_wear``);
+4. repeats 2-3 until ``cycles`` cycles are done.
+
+A cycle is the period of the model's drivers (an angle driver at constant speed: 2 pi /
+speed; a harmonic function: 2 pi / angular frequency). The run stops early, with its status
+and a message, if a simulated run fails or is interrupted (Ctrl-C, SIGTERM: the update in
+progress is lost, nothing else), if a journal would be worn through, or if a joint's
+effective clearance (``records``) would grow by more than ``max_growth`` times its
+nominal clearance (default 1: doubled): the contact stiffness and the Hertz patch are
+computed from the nominal radii, and the worn profile enters the contact only as a radial
+depth (its slope neglected), so well past the nominal clearance the model no longer
+describes the joint.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from dataclasses import asdict, dataclass
+from os import PathLike
+from pathlib import Path
+
+import pandas as pd
+
+from ...interrupts import stop_requests
+from ...model import ModelError, load_model
+from ...results.run_state import RunState
+from ...status import INTERRUPTED, SUCCESS
+from . import files
+from .records import life_summary, table_columns
+from .settings import LifeSettings, cycle_driver, with_feedback
+from .update import RESUME, LifeRun
+
+LifeProgress = Callable[[int, int], None]  # (cycles done, cycles asked for)
+
+
+@dataclass(frozen=True)
+class LifeResults:
+    """Outcome of ``life``: the tables of its folder, its summary and where it ended.
+
+    Attributes
+    ----------
+    table
+        life.csv: one row per update (``records.table_columns``).
+    profiles
+        profiles.csv: the wear profiles after every update.
+    summary
+        summary.json: status, message, cycles reached, updates, per joint the final figures.
+    final
+        The state the run ended in (profiles updated), None if it made no update.
+    """
+
+    table: pd.DataFrame
+    profiles: pd.DataFrame
+    summary: dict
+    final: RunState | None
+
+    @property
+    def status(self) -> str:
+        """``success``, ``interrupted``, ``failed``, ``clearance_limit`` or ``worn_through``."""
+        return self.summary["status"]
+
+    @property
+    def message(self) -> str:
+        """What the status means."""
+        return self.summary["message"]
+
+
+def life(
+    model_path: str | PathLike,
+    out: str | PathLike,
+    *,
+    cycles: int,
+    overrides: Sequence[str] = (),
+    settle_cycles: int = 2,
+    measure_cycles: int = 1,
+    steady_tolerance: float = 0.05,
+    max_update_cycles: int = 20,
+    max_change: str | float = "1%",
+    extrapolate: bool = True,
+    feedback: bool | None = None,
+    max_growth: float = 1.0,
+    resume: bool = False,
+    figures: bool = True,
+    progress: LifeProgress | None = None,
+) -> LifeResults:
+    """Predict the wear of ``model_path``'s clearance joints over ``cycles`` driver cycles.
+
+    Parameters
+    ----------
+    model_path
+        TOML model file, with clearance joints and periodic drivers.
+    out
+        Folder for life.csv, profiles.csv, summary.json, model.json, figures/ and checkpoint/.
+    cycles
+        Driver cycles to reach, simulated and extrapolated.
+    overrides
+        ``dotted.path=value`` settings applied before validation (as ``--set``).
+    settle_cycles
+        Cycles simulated first, from the assembled start, before any extrapolation.
+    measure_cycles
+        Cycles whose mean wear is the wear of one cycle (without extrapolation: the cycles
+        of an update).
+    steady_tolerance
+        With extrapolation, an update simulates cycle after cycle until the mean wear of the
+        last ``measure_cycles`` and of the ``measure_cycles`` before them agree: no sector's
+        differs by more than this share of the deepest [-].
+    max_update_cycles
+        At most this many cycles per update. If they never agree (chaotic impacts, a
+        drifting regime) the mean wear of their second half is extrapolated, and the
+        update's row says ``steady`` 0.
+    max_change
+        Largest depth an update (simulated and extrapolated cycles) may add to a sector: a
+        length (``"1 um"``, or a number [m]) or a share of the joint's current clearance
+        (``"2%"``).
+    extrapolate
+        False: no extrapolation, every cycle is simulated (a direct run, update by update).
+    feedback
+        Whether the worn profiles feed back into the contact; None keeps each joint's
+        ``wear_feedback``.
+    max_growth
+        Stop when a joint's effective clearance would grow by more than this share of its
+        nominal clearance [-] (module docstring).
+    resume
+        Continue the run interrupted in ``out``, with the same settings and model.
+    figures
+        Draw the figures into ``out/figures``.
+    progress
+        Called after every update with the cycles done and ``cycles``.
+
+    Returns
+    -------
+    LifeResults
+        Also when the run stopped early (its status says why).
+
+    Raises
+    ------
+    ModelError
+        For invalid settings or models, one line per problem.
+    """
+    settings = LifeSettings(
+        cycles, settle_cycles, measure_cycles, steady_tolerance, max_update_cycles, max_change,
+        extrapolate, feedback, max_growth,
+    )  # fmt: skip
+    problems = settings.problems()
+    try:
+        model = with_feedback(load_model(model_path, overrides), feedback)
+    except ModelError as error:
+        raise ModelError(problems + error.problems) from None
+    try:
+        driver, period = cycle_driver(model)
+    except ModelError as error:
+        problems += error.problems
+    if not model.has_clearance:
+        problems.append("joints: a life run needs a clearance joint ([joints.clearance])")
+    if problems:
+        raise ModelError(problems)
+    folder = Path(out)
+    record = {"settings": asdict(settings), "model": model.model_dump(mode="json")}
+    if resume:
+        point = files.load_checkpoint(folder, record)
+    else:
+        files.start_folder(folder, table_columns(model, driver), record)
+        point = files.Checkpoint(0, 0, 0, 0.0, None)
+    with stop_requests() as stop:
+        run = LifeRun(model, settings, driver, period, folder, record, point.wall_s, stop)
+        while point.cycles < cycles and run.status == SUCCESS:
+            point = run.update(point)
+            if progress is not None and run.status == SUCCESS:
+                progress(point.cycles, cycles)
+            if stop[0] and run.status == SUCCESS and point.cycles < cycles:
+                run.stop(INTERRUPTED, f"interrupted at {point.cycles} cycles{RESUME}")
+    with stop_requests():  # the folder is completed whatever comes now
+        table, profiles = files.read_tables(folder)
+        wear = None if point.state is None else point.state.wear
+        outcome = {
+            "status": run.status,
+            "message": run.message,
+            "cycles": cycles,
+            "period_s": period,
+            "driver": driver,
+            "wall_s": run.wall(),
+            "settings": {**record["settings"], "overrides": list(overrides)},
+        }
+        summary = life_summary(model, table, wear, outcome)
+        files.write_summary(folder, summary)
+        if figures and len(table):
+            from ...figures.life import save_life_figures  # matplotlib only when asked for
+
+            save_life_figures(model, driver, table, profiles, folder / files.FIGURES)
+    return LifeResults(table, profiles, summary, point.state)

@@ -1,0 +1,248 @@
+"""One update of a long-life wear run: simulate, measure, extrapolate, record.
+
+``study.life`` describes the method; ``LifeRun.update`` carries out one step of it and
+writes its row, profiles and checkpoint (``files``).
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from pathlib import Path
+
+import numpy as np
+from numpy.typing import NDArray
+
+from ...model import Model
+from ...results import Results
+from ...results.clearance import UM
+from ...results.run_state import RunState
+from ...simulate import simulate
+from ...status import CLEARANCE_LIMIT, FAILED, INTERRUPTED, SUCCESS, WORN_THROUGH
+from . import files
+from .records import (
+    clearance_growths,
+    profile_rows,
+    relative_angle_range,
+    update_row,
+)
+from .settings import LifeSettings
+
+RESUME = "; --resume (resume=True) goes on from there"
+
+
+class LifeRun:
+    """The updates of one session of a life run, and how it ended (``status``, ``message``).
+
+    Parameters
+    ----------
+    model, settings
+        The model as run and the life settings.
+    driver, period
+        The driver whose torque is followed, and the cycle [s] (``cycle_driver``).
+    folder, record
+        The run's folder, and the settings and model its checkpoints carry.
+    wall_before
+        Wall time of the earlier sessions of the run [s].
+    stop_requested
+        The flag of ``interrupts.stop_requests``: once set, no further cycle is simulated.
+    """
+
+    def __init__(
+        self,
+        model: Model,
+        settings: LifeSettings,
+        driver: str,
+        period: float,
+        folder: Path,
+        record: dict,
+        wall_before: float,
+        stop_requested: list[bool],
+    ) -> None:
+        self.model, self.settings, self.driver, self.period = model, settings, driver, period
+        self.folder, self.record, self.stop_requested = folder, record, stop_requested
+        self.wall_before, self.start = wall_before, time.perf_counter()
+        self.status, self.message = SUCCESS, f"reached {settings.cycles} cycles"
+
+    def wall(self) -> float:
+        """Wall time of the run, over every session [s]."""
+        return self.wall_before + time.perf_counter() - self.start
+
+    def stop(self, status: str, message: str) -> None:
+        """End the run with ``status``."""
+        self.status, self.message = status, message
+
+    def update(self, point: files.Checkpoint) -> files.Checkpoint:
+        """Simulate, extrapolate and record one update; return the new checkpoint.
+
+        ``point`` comes back unchanged if the run stops instead (``status``).
+        """
+        settings, model = self.settings, self.model
+        left = settings.cycles - point.cycles
+        settling = point.state is None and settings.settle_cycles > 0
+        if settling:
+            simulated = min(settings.settle_cycles, left)
+            settled = self._simulate(point, None, 0, simulated)
+            if settled is None:
+                return point
+            runs = measured = [settled]
+            rate, steady = settled.final.wear / simulated, True
+        else:
+            outcome = self._measure(point, left)
+            if outcome is None:
+                return point
+            runs, measured, rate, steady = outcome
+            simulated = len(runs)
+        final = runs[-1].final
+        psi = [relative_angle_range(joint, measured) for joint in model.clearance_joints]
+        extra = 0
+        if settings.extrapolate and not settling:
+            growth = clearance_growths(model, final.wear, psi)
+            done = final.wear - (0.0 if point.state is None else point.state.wear)
+            extra = self._extrapolated_cycles(rate, done, growth, left - simulated)
+        wear = final.wear + extra * rate
+        growth = clearance_growths(model, wear, psi)
+        cycles = point.cycles + simulated + extra
+        if self._past_limit(wear, growth, point.cycles, cycles):
+            return point
+        update = 0 if settling else point.update + 1
+        counts = (update, cycles, point.simulated_cycles + simulated, extra, int(steady))
+        wall = self.wall()
+        row = update_row(model, self.driver, counts, wear, rate, growth, measured, wall)
+        files.append_update(self.folder, row, profile_rows(model, update, cycles, wear))
+        new = files.Checkpoint(update, cycles, counts[2], wall, final.with_wear(wear))
+        files.save_checkpoint(self.folder, new, self.record)
+        return new
+
+    def _measure(
+        self, point: files.Checkpoint, left: int
+    ) -> tuple[list[Results], list[Results], NDArray[np.float64], bool] | None:
+        """Simulate cycle by cycle until the wear per cycle is steady.
+
+        Without extrapolation ``measure_cycles`` cycles. With it, until the mean wear of the
+        last ``measure_cycles`` agrees with that of the ``measure_cycles`` before them to
+        ``steady_tolerance``, and at most ``max_update_cycles``.
+
+        Returns
+        -------
+        tuple or None
+            The runs (one per cycle), those measured, the wear per cycle [m] (their mean),
+            and whether it was steady (False after ``max_update_cycles``: then the second
+            half of the runs is measured); None if a run failed or was interrupted.
+        """
+        settings = self.settings
+        most = settings.max_update_cycles if settings.extrapolate else settings.measure_cycles
+        state, runs, rates = point.state, [], []
+        while len(runs) < min(most, left):
+            results = self._simulate(point, state, len(runs), 1)
+            if results is None:
+                return None
+            start = np.zeros_like(results.final.wear) if state is None else state.wear
+            rates.append(results.final.wear - start)
+            runs.append(results)
+            state = results.final
+            if not settings.extrapolate:
+                continue
+            m = settings.measure_cycles
+            if len(runs) >= 2 * m:
+                last = np.mean(rates[-m:], axis=0)
+                if self._steady(np.mean(rates[-2 * m : -m], axis=0), last):
+                    return runs, runs[-m:], last, True
+        if not settings.extrapolate:
+            return runs, runs, np.mean(rates, axis=0), True
+        unsettled = len(runs) == most  # not for want of cycles left
+        # A motion that does not settle (a chaotic one) wears at its long-run mean: that of
+        # the update's second half, past the transient the jump in the profiles started.
+        first = len(runs) // 2 if unsettled else min(1, len(runs) - 1)
+        return runs, runs[first:], np.mean(rates[first:], axis=0), not unsettled
+
+    def _steady(self, before: NDArray[np.float64], last: NDArray[np.float64]) -> bool:
+        """Whether two wears per cycle agree, sector by sector, to ``steady_tolerance``."""
+        for k, joint in enumerate(self.model.clearance_joints):
+            n = joint.clearance.sectors
+            change = np.abs(last[k, :, :n] - before[k, :, :n]).max()
+            if change > self.settings.steady_tolerance * last[k, :, :n].max():
+                return False
+        return True
+
+    def _simulate(
+        self, point: files.Checkpoint, begin: RunState | None, after: int, count: int
+    ) -> Results | None:
+        """Simulate ``count`` cycles from ``begin``, ``after`` cycles past ``point``.
+
+        None if the run failed or was interrupted (``status`` then says so).
+        """
+        first = point.cycles + after
+        span = f"cycles {first} to {first + count}"
+        if self.stop_requested[0]:
+            self.stop(INTERRUPTED, f"interrupted before {span}{RESUME}")
+            return None
+        outcome = simulate(self._cycles_model(count), initial=begin)
+        if outcome.status == INTERRUPTED:
+            self.stop(INTERRUPTED, f"interrupted during {span}{RESUME}")
+            return None
+        if outcome.status != SUCCESS:
+            self.stop(FAILED, f"the run of {span} ended '{outcome.status}': {outcome.message}")
+            return None
+        return outcome
+
+    def _cycles_model(self, count: int) -> Model:
+        """The model run for ``count`` cycles (one wear snapshot, at the end)."""
+        duration = count * self.period
+        solver = self.model.solver.model_copy(
+            update={"t_end": duration, "wear_snapshot_interval": duration}
+        )
+        return self.model.model_copy(update={"solver": solver})
+
+    def _extrapolated_cycles(
+        self,
+        rate: NDArray[np.float64],
+        done: NDArray[np.float64],
+        growth: NDArray[np.float64],
+        left: int,
+    ) -> int:
+        """Cycles over which ``rate`` may be extrapolated, ``left`` at most.
+
+        No sector may change by more than ``max_change`` in the whole update: the depth
+        ``done`` [m] its simulated cycles wore, plus the extrapolated cycles times ``rate``
+        [m/cycle].
+        """
+        extra = left
+        for k, joint in enumerate(self.model.clearance_joints):
+            n = joint.clearance.sectors
+            bound = self.settings.change_bound(joint.clearance.radial_clearance + growth[k])
+            wearing = rate[k, :, :n] > 0.0
+            if wearing.any():
+                room = (bound - done[k, :, :n][wearing]) / rate[k, :, :n][wearing]
+                extra = min(extra, max(0, math.floor(room.min())))
+        return extra
+
+    def _past_limit(
+        self, wear: NDArray[np.float64], growth: NDArray[np.float64], before: int, after: int
+    ) -> bool:
+        """Stop if profiles ``wear`` pass a limit (``study.life``); True if so."""
+        for k, joint in enumerate(self.model.clearance_joints):
+            c = joint.clearance
+            journal = wear[k, 1, : c.sectors].max()
+            if journal >= c.journal_radius:
+                self.stop(
+                    WORN_THROUGH,
+                    f"{joint.name}: the journal would be worn {journal * 1e3:.4g} mm deep "
+                    f"between cycles {before} and {after}, through its radius "
+                    f"{c.journal_radius * 1e3:.4g} mm",
+                )
+                return True
+            limit = self.settings.max_growth * c.radial_clearance
+            if growth[k] > limit:
+                self.stop(
+                    CLEARANCE_LIMIT,
+                    f"{joint.name}: the effective clearance would grow by {growth[k] * UM:.4g} "
+                    f"µm, {growth[k] / c.radial_clearance:.0%} of the nominal "
+                    f"{c.radial_clearance * UM:.4g} µm, between cycles {before} and {after}: "
+                    f"past max_growth {self.settings.max_growth:g}. The contact stiffness and "
+                    "Hertz patch are those of the nominal radii and the worn profile enters "
+                    "only radially, so the model would no longer describe the joint (resume "
+                    "with a larger max_growth to go on regardless)",
+                )
+                return True
+        return False

@@ -1,0 +1,316 @@
+"""The cases of a parameter study: ``--vary`` options and sweep files -> named sets of overrides.
+
+A sweep varies model values addressed by the same dotted paths as ``--set``
+(``joints.coupler_follower.clearance.friction_coefficient``); each path gets a list of values
+written as ``--set`` would take them (``0.05``, ``"0.1 mm"``, ``abm``). The cases are the
+Cartesian product of the lists, the first path varying slowest. Each case is named by its
+varied values (``friction_coefficient=0.05__bearing_radius=10.1_mm``), a name that is stable
+from one run of the same sweep to the next and safe as a folder name.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import itertools
+import json
+import os
+import re
+import tomllib
+from collections.abc import Iterable, Mapping, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+
+from ...model import Model
+from ...model.errors import ModelError, did_you_mean
+
+VARY_EXAMPLE = "joints.coupler_follower.clearance.friction_coefficient=0.05,0.1"
+SWEEP_FILE_KEYS = ("vary", "set")
+MAX_ID_LENGTH = 120  # characters of a case name (a folder name) before it is shortened
+_UNSAFE = re.compile(r"[^A-Za-z0-9.+-]+")  # characters a case name does not keep
+
+
+@dataclass(frozen=True)
+class Plan:
+    """What to vary and what to set, before the model is read.
+
+    Attributes
+    ----------
+    vary
+        Dotted path -> value texts, as ``--set`` takes them (``"0.1 mm"``, ``"0.05"``).
+    overrides
+        ``dotted.path=value`` settings common to every case.
+    """
+
+    vary: dict[str, list[str]]
+    overrides: list[str]
+
+
+@dataclass(frozen=True)
+class Case:
+    """One case of a sweep: its name and the overrides that make it."""
+
+    id: str
+    values: dict[str, str]  # dotted path -> value text
+
+    @property
+    def overrides(self) -> list[str]:
+        """The case's own ``path=value`` overrides (applied after the sweep's common ones)."""
+        return [f"{path}={text}" for path, text in self.values.items()]
+
+
+def parse_vary(options: Iterable[str]) -> dict[str, list[str]]:
+    """Read ``--vary PATH=V1,V2,...`` options.
+
+    Commas inside brackets or quotes belong to their value, so arrays
+    (``youngs_modulus=[2.07e11, 1.1e11],2.07e11``) and quoted strings can be varied too.
+
+    Raises
+    ------
+    ModelError
+        One line per malformed option or repeated path (``check_vary`` judges the values).
+    """
+    vary: dict[str, list[str]] = {}
+    problems = []
+    for option in options:
+        path, equals, text = option.partition("=")
+        path = path.strip()
+        values = [value.strip() for value in _split_values(text)]
+        if not equals or not path or not all(path.split(".")) or not all(values):
+            problems.append(f"--vary {option}: expected PATH=V1,V2,..., e.g. {VARY_EXAMPLE}")
+        elif path in vary:
+            problems.append(f"--vary {option}: {path} is varied twice; give its values once")
+        else:
+            vary[path] = values
+    if problems:
+        raise ModelError(problems)
+    return vary
+
+
+def _split_values(text: str) -> list[str]:
+    """Split at commas that are not inside brackets, braces or quotes."""
+    values, start, depth, quote = [], 0, 0, ""
+    for i, char in enumerate(text):
+        if quote:
+            quote = "" if char == quote else quote
+        elif char in "\"'":
+            quote = char
+        elif char in "[{":
+            depth += 1
+        elif char in "]}":
+            depth -= 1
+        elif char == "," and depth == 0:
+            values.append(text[start:i])
+            start = i + 1
+    return [*values, text[start:]]
+
+
+def check_vary(vary: Mapping[str, Sequence[str]]) -> None:
+    """Refuse an empty sweep, a path without values, and a value given twice for a path.
+
+    Raises
+    ------
+    ModelError
+        One line per problem.
+    """
+    if not vary:
+        raise ModelError([f"--vary: nothing is varied; give e.g. --vary {VARY_EXAMPLE}"])
+    problems = []
+    for path, texts in vary.items():
+        if isinstance(texts, str) or not isinstance(texts, Sequence) or not texts:
+            problems.append(f"--vary {path}: expected a non-empty list of values")
+            continue
+        seen: dict[str, str] = {}
+        for text in texts:
+            key = json.dumps(value_of(text), sort_keys=True)
+            if key in seen:
+                problems.append(
+                    f"--vary {path}: value {text} repeats {seen[key]}; give each value once"
+                )
+            seen.setdefault(key, text)
+    if problems:
+        raise ModelError(problems)
+
+
+def value_of(text: str) -> object:
+    """The value a ``--set`` text stands for: a TOML value, or else the text itself."""
+    try:
+        return tomllib.loads(f"v = {text}")["v"]
+    except tomllib.TOMLDecodeError:
+        return text.strip()
+
+
+def value_text(value: object) -> str:
+    """Write a value as ``--set`` reads it: strings as given, anything else as TOML."""
+    if isinstance(value, str):
+        return value.strip()
+    return _toml(value)
+
+
+def _toml(value: object) -> str:
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, int | float):
+        return repr(value)  # also inf and nan, which TOML spells the same
+    if isinstance(value, str):
+        return json.dumps(value, ensure_ascii=False)  # a TOML basic string
+    if isinstance(value, Mapping):
+        return "{" + ", ".join(f"{json.dumps(str(k))} = {_toml(v)}" for k, v in value.items()) + "}"
+    if isinstance(value, Sequence):
+        return "[" + ", ".join(_toml(v) for v in value) + "]"
+    raise ModelError([f"{value!r}: cannot be a model value; give a number, string or array"])
+
+
+def read_sweep_file(path: str | os.PathLike) -> Plan:
+    """Read a sweep file: TOML with a ``[vary]`` table and an optional ``[set]`` table.
+
+    ``[vary]`` maps dotted paths to lists of values, ``[set]`` dotted paths to values; keys
+    may be quoted (``"solver.t_end" = 0.02``) or nested tables (``[set.solver]``).
+
+    Raises
+    ------
+    ModelError
+        If the file cannot be read or is not of this form.
+    """
+    path = Path(path)
+    try:
+        data = tomllib.loads(path.read_bytes().decode())
+    except OSError as error:
+        raise ModelError([f"{path}: cannot read the sweep file; {error.strerror}"]) from None
+    except (UnicodeDecodeError, tomllib.TOMLDecodeError) as error:
+        raise ModelError([f"{path}: not a TOML sweep file; {error}"]) from None
+    problems = [
+        f"{path}: unknown key {key!r}; a sweep file has the tables vary and set"
+        f"{did_you_mean(key, SWEEP_FILE_KEYS)}"
+        for key in data
+        if key not in SWEEP_FILE_KEYS
+    ]
+    vary: dict[str, list[str]] = {}
+    for dotted, values in _leaves(data.get("vary", {}), stop_at_lists=True):
+        if not isinstance(values, list) or not values:
+            problems.append(f"{path}: vary.{dotted}: expected a non-empty array of values")
+        else:
+            vary[dotted] = [_toml(value) for value in values]
+    overrides = [f"{dotted}={_toml(value)}" for dotted, value in _leaves(data.get("set", {}))]
+    if problems:
+        raise ModelError(problems)
+    return Plan(vary=vary, overrides=overrides)
+
+
+def _leaves(
+    table: object, prefix: str = "", *, stop_at_lists: bool = False
+) -> list[tuple[str, object]]:
+    if not isinstance(table, dict) or not table:
+        return [(prefix, table)] if prefix else []
+    leaves = []
+    for key, value in table.items():
+        dotted = f"{prefix}.{key}" if prefix else key
+        if isinstance(value, dict) and value:
+            leaves += _leaves(value, dotted, stop_at_lists=stop_at_lists)
+        else:
+            leaves.append((dotted, value))
+    return leaves
+
+
+def make_plan(
+    vary_options: Sequence[str] = (),
+    sweep_file: str | os.PathLike | None = None,
+    overrides: Sequence[str] = (),
+) -> Plan:
+    """Merge a sweep file (if any) with ``--vary`` and ``--set`` options given with it.
+
+    The options' ``--set`` values come after the file's ``[set]``, so they win.
+
+    Raises
+    ------
+    ModelError
+        If an option or the file is malformed, or a path is varied in both.
+    """
+    plan = read_sweep_file(sweep_file) if sweep_file is not None else Plan({}, [])
+    given = parse_vary(vary_options)
+    twice = [
+        f"--vary {path}: also varied in {sweep_file}; vary it in one place"
+        for path in given
+        if path in plan.vary
+    ]
+    if twice:
+        raise ModelError(twice)
+    return Plan(vary={**plan.vary, **given}, overrides=[*plan.overrides, *overrides])
+
+
+def make_cases(vary: Mapping[str, Sequence[str]]) -> list[Case]:
+    """The Cartesian product of the varied values, each case named by its values.
+
+    Parameters
+    ----------
+    vary
+        Dotted path -> value texts (``parse_vary``), in the order they vary (first slowest).
+    """
+    keys = _short_keys(list(vary))
+    cases = []
+    for texts in itertools.product(*vary.values()):
+        values = dict(zip(vary, texts, strict=True))
+        name = "__".join(f"{keys[path]}={_safe(text)}" for path, text in values.items())
+        cases.append(Case(id=name, values=values))
+    return _unique(cases)
+
+
+def _short_keys(paths: list[str]) -> dict[str, str]:
+    """The shortest trailing part of each path that tells the paths apart."""
+    keys = {}
+    for path in paths:
+        parts = path.split(".")
+        for n in range(1, len(parts) + 1):
+            key = ".".join(parts[-n:])
+            others = [other for other in paths if other != path]
+            if not any(other == key or other.endswith(f".{key}") for other in others):
+                break
+        keys[path] = key
+    return keys
+
+
+def _safe(text: str) -> str:
+    value = value_of(text)
+    shown = value if isinstance(value, str) else text
+    return _UNSAFE.sub("_", shown.strip()).strip("_") or "_"
+
+
+def _unique(cases: list[Case]) -> list[Case]:
+    """Shorten long names and tell apart names that differ only in case or unsafe characters."""
+    seen = {}
+    named = []
+    for case in cases:
+        digest = hashlib.sha1(json.dumps(case.values).encode()).hexdigest()[:8]
+        name = case.id
+        if len(name) > MAX_ID_LENGTH:
+            name = f"{name[: MAX_ID_LENGTH - 9]}-{digest}"
+        if name.lower() in seen:  # case-insensitive file systems
+            name = f"{name}-{digest}"
+        seen[name.lower()] = case
+        named.append(Case(id=name, values=case.values))
+    return named
+
+
+def si_value(model: Model, path: str, text: str) -> object:
+    """The value a varied path has in the validated model: SI for quantities.
+
+    A number or a string stays as it is in the model; any other value (e.g. a pair of
+    moduli) is given as its JSON text. Where the path does not lead to a single model value,
+    the value as given.
+    """
+    current: object = model.model_dump(mode="json")
+    for key in path.split("."):
+        if isinstance(current, dict) and key in current:
+            current = current[key]
+        elif isinstance(current, list):
+            names = [item.get("name") if isinstance(item, dict) else None for item in current]
+            if key in names:
+                current = current[names.index(key)]
+            elif key.isdigit() and int(key) < len(current):
+                current = current[int(key)]
+            else:
+                return value_of(text)
+        else:
+            return value_of(text)
+    if isinstance(current, bool | int | float | str):
+        return current
+    return json.dumps(current)
