@@ -10,6 +10,7 @@ from __future__ import annotations
 import math
 import time
 from collections.abc import Callable
+from typing import NamedTuple
 
 import numpy as np
 import pandas as pd
@@ -24,6 +25,7 @@ from .kernels.elements import ElementLog, Elements, ElementScratch, ElementState
 from .kernels.elements.journal import DEGREES_OF_FREEDOM, N_IMPACT_INFO, make_journals
 from .kernels.integrate.abm import make_abm_state
 from .kernels.integrate.rk import DOPRI5, S_T, make_rk_state
+from .kernels.structs import StructProxy, to_struct
 from .model import Model
 from .results import Results
 from .results.clearance import (
@@ -106,6 +108,15 @@ def _kernel_arrays(
     return problem, log, work
 
 
+def _by_reference(*tables: NamedTuple) -> tuple[StructProxy, ...]:
+    """The loop's tables as structs (sharing their arrays), so each call passes a pointer."""
+    nested = {"mech", "dyn"}  # Problem's fields that are tables themselves
+    return tuple(
+        to_struct(t._replace(**{f: to_struct(getattr(t, f)) for f in nested & set(t._fields)}))
+        for t in tables
+    )
+
+
 def simulate(
     model: Model, *, progress: Progress | None = None, initial: RunState | None = None
 ) -> Results:
@@ -169,7 +180,8 @@ def simulate(
 
     wall_start = time.perf_counter()
     status = Status.RUNNING
-    if not loop.start(problem, integ, system.events, log, scratch, t0, y0, solver.initial_step):
+    args = _by_reference(problem, integ, system.events, ctl, log, scratch)
+    if not loop.start(*args[:3], *args[4:], t0, y0, solver.initial_step):
         status = Status.SINGULAR
     chunk = min(solver.t_end, MIN_CHUNK_STEPS * solver.max_step)
     budget = MIN_CHUNK_STEPS  # steps a chunk may take, so a stalled run still hands back
@@ -178,10 +190,7 @@ def simulate(
             t_before = float(integ.scal[S_T])
             chunk_start = time.perf_counter()
             steps_before = log.counters[Counter.ACCEPTED] + log.counters[Counter.REJECTED]
-            code, rows = loop.advance(
-                problem, integ, system.events, ctl, log, scratch, buffer,
-                t_before + chunk, steps_before + budget,
-            )  # fmt: skip
+            code, rows = loop.advance(*args, buffer, t_before + chunk, steps_before + budget)
             status = Status(code)
             blocks.append(buffer[:rows].copy())
             for i in range(log.counters[Counter.EVENTS]):

@@ -30,7 +30,6 @@ import numpy as np
 from numba import njit
 
 from . import elements, integrate
-from .borrow import borrow
 from .codes import Counter, EventDirection, Status
 from .dynamics import constraint_norm, rhs
 from .outputs import write_row
@@ -133,7 +132,7 @@ def _excess(problem, slot, y):
     )
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, inline="always")
 def _crossing(problem, events, integ, scratch, kind, index, t):
     """Value at t [s] of a user event (kind 0), a slot's onset (1) or its separation (2)."""
     if kind == 0:
@@ -178,7 +177,7 @@ def _locate(problem, events, integ, scratch, kind, index, ta, ga, tb, gb, g_tol)
     return tb
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, inline="always")
 def _log_events(problem, events, integ, log, scratch, t_old, t_new, y_new):
     for e in range(scratch.event_prev.shape[0]):
         g0 = scratch.event_prev[e]
@@ -199,7 +198,7 @@ def _log_events(problem, events, integ, log, scratch, t_old, t_new, y_new):
             log.counters[Counter.EVENTS] += 1
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, inline="always")
 def _contact_cut(problem, events, integ, scratch, t_old, y_old, t_new, y_new):
     """Earliest change of contact inside the step just accepted [s], or t_new if none.
 
@@ -232,7 +231,7 @@ def _contact_cut(problem, events, integ, scratch, t_old, y_old, t_new, y_new):
     return t_first, midpoint_known
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, inline="always")
 def _write_rows(problem, integ, ctl, log, scratch, out, rows, t):
     """Write the output rows due by time t [s]; return (row count, False if singular)."""
     k = log.counters[Counter.OUTPUT_ROWS]
@@ -246,13 +245,13 @@ def _write_rows(problem, integ, ctl, log, scratch, out, rows, t):
     return rows, True
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, inline="always")
 def _copy(source, target):
     for i in range(source.shape[0]):
         target[i] = source[i]
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, inline="always")
 def _after_step(problem, integ, events, ctl, log, scratch, out, rows, h):
     """Contact changes, wear, events and rows of the step just accepted.
 
@@ -311,8 +310,6 @@ def advance(problem, integ, events, ctl, log, scratch, out, t_stop, step_stop):
     and before its event, impact or output buffers could overflow. Steps are never shortened
     to land on t_stop, only on the end time, so the solution does not depend on the chunks.
     """
-    problem, integ, events = borrow(problem), borrow(integ), borrow(events)  # kernels.borrow
-    ctl, log, scratch = borrow(ctl), borrow(log), borrow(scratch)
     rows = 0
     n_events = scratch.event_prev.shape[0]
     slots = elements.slot_count(problem.elements)

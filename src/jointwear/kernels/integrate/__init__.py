@@ -24,6 +24,7 @@ from numba.extending import overload
 
 from ..codes import Counter, Status
 from ..dynamics import rhs
+from ..structs import kind_of
 from .abm import (
     S_H,
     S_HOLD,
@@ -140,7 +141,7 @@ def _state(st):
 
 
 _METHODS = {
-    RkState: {
+    RkState.__name__: {
         "start": rk_start,
         "restart": _rk_restart,
         "attempt": _rk_attempt,
@@ -148,7 +149,7 @@ _METHODS = {
         "interpolate": rk_interpolate,
         "interpolate_ends": rk_interpolate,  # passes through both ends already
     },
-    AbmState: {
+    AbmState.__name__: {
         "start": abm_start,
         "restart": _abm_restart,
         "attempt": _abm_attempt,
@@ -163,7 +164,7 @@ def _implementation(name):
     """The overload of interface function ``name``: the method module's, by state type."""
 
     def choose(st, *args):
-        return _METHODS[st.instance_class][name]
+        return _METHODS[kind_of(st)][name]
 
     return choose
 
