@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import time
+from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn, TimeRemainingColumn
@@ -53,6 +54,37 @@ class ProgressBar:
         """Remove the bar, if one was shown."""
         if self.bar is not None:
             self.bar.stop()
+            self.bar = None
+
+
+class CompileNotice:
+    """Says once on stderr that numba is compiling the kernels; a bar of functions on a terminal.
+
+    ``then(progress)`` wraps the work's progress callback so that it removes this bar first.
+    """
+
+    def __init__(self) -> None:
+        self.bar = ProgressBar("compiling", "{task.completed}/~{task.total} kernels")
+
+    def started(self) -> None:
+        """The first compile of the process has begun."""
+        err.print(
+            "compiling the kernels: the first run after an install or an upgrade (cached after)",
+            soft_wrap=True,
+        )
+
+    def __call__(self, done: int, total: int) -> None:
+        """Show ``done`` of about ``total`` functions compiled."""
+        self.bar(done, total)
+
+    def then(self, progress: Callable[[float, float], None]) -> Callable[[float, float], None]:
+        """``progress``, removing the compile bar before it shows its own."""
+
+        def report(done: float, total: float) -> None:
+            self.bar.close()
+            progress(done, total)
+
+        return report
 
 
 class SweepProgress:
@@ -88,3 +120,4 @@ class SweepProgress:
         """Remove the bar, if one was shown."""
         if self.bar is not None:
             self.bar.stop()
+            self.bar = None

@@ -11,7 +11,7 @@ from rich.markup import escape
 from rich.table import Table
 
 from .common import ModelPath, Overrides, err, fail, out
-from .progress import ProgressBar
+from .progress import CompileNotice, ProgressBar
 
 if TYPE_CHECKING:
     from ..model.clearance import Clearance
@@ -35,6 +35,7 @@ def run(
     ] = True,
 ) -> None:
     """Simulate MODEL and write the results folder (summary, time series, wear, figures)."""
+    from ..compiling import compile_notice
     from ..model import ModelError
     from ..run import run as run_model
     from ..status import SUCCESS
@@ -45,13 +46,17 @@ def run(
     bar = ProgressBar(
         "simulating", "t = {task.completed:.4g} / {task.total:.4g} s", PROGRESS_AFTER_S
     )
+    compiling = CompileNotice()
     try:
-        results = run_model(
-            model, out_dir, overrides=settings, figures=figures, ideal=ideal, progress=bar
-        )
+        with compile_notice(compiling.started, compiling):
+            results = run_model(
+                model, out_dir, overrides=settings, figures=figures, ideal=ideal,
+                progress=compiling.then(bar),
+            )  # fmt: skip
     except ModelError as error:
         raise fail(error) from None
     finally:
+        compiling.bar.close()
         bar.close()
     stats = results.summary["stats"]
     out.print(

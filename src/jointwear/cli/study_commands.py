@@ -8,7 +8,7 @@ from typing import Annotated
 import typer
 
 from .common import PLAIN, ModelPath, Overrides, err, fail, out
-from .progress import ProgressBar, SweepProgress
+from .progress import CompileNotice, ProgressBar, SweepProgress
 
 
 def sweep(
@@ -147,32 +147,36 @@ def life(
     profile by at most --max-change), updates the joint geometry and repeats. OUT gets
     life.csv (one row per update), profiles.csv, summary.json and figures/.
     """
+    from ..compiling import compile_notice
     from ..model import ModelError
     from ..status import SUCCESS
     from ..studies.life.study import life as run_life
 
     bar = ProgressBar("wearing", "{task.completed:,} / {task.total:,} cycles")
+    compiling = CompileNotice()
     try:
-        results = run_life(
-            model,
-            out_dir,
-            cycles=cycles,
-            overrides=overrides or [],
-            settle_cycles=settle_cycles,
-            measure_cycles=measure_cycles,
-            steady_tolerance=steady_tolerance,
-            max_update_cycles=max_update_cycles,
-            max_change=max_change,
-            extrapolate=extrapolate,
-            feedback=feedback,
-            max_growth=max_growth,
-            resume=resume,
-            figures=figures,
-            progress=bar,
-        )
+        with compile_notice(compiling.started, compiling):
+            results = run_life(
+                model,
+                out_dir,
+                cycles=cycles,
+                overrides=overrides or [],
+                settle_cycles=settle_cycles,
+                measure_cycles=measure_cycles,
+                steady_tolerance=steady_tolerance,
+                max_update_cycles=max_update_cycles,
+                max_change=max_change,
+                extrapolate=extrapolate,
+                feedback=feedback,
+                max_growth=max_growth,
+                resume=resume,
+                figures=figures,
+                progress=compiling.then(bar),
+            )
     except ModelError as error:
         raise fail(error) from None
     finally:
+        compiling.bar.close()
         bar.close()
     summary = results.summary
     unsteady = summary["unsteady_updates"]
