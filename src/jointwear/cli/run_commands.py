@@ -132,8 +132,10 @@ def check(model: ModelPath, overrides: Overrides = None) -> None:
 
 
 def _clearance_table(name: str, clearance: Clearance) -> Table:
-    """The derived contact and wear parameters of a clearance joint."""
-    table = Table(title=f"clearance joint '{name}'")
+    """The derived contact parameters of a clearance joint, and its laws with their keys."""
+    from ..model.clearance import FAMILIES
+
+    table = Table(title=f"clearance joint '{name}'", caption_justify="left")
     table.add_column("quantity")
     table.add_column("value", justify="right")
     table.add_column("unit")
@@ -147,15 +149,19 @@ def _clearance_table(name: str, clearance: Clearance) -> Table:
         b, p_max = clearance.hertz_patch(force)
         rows.append((f"Hertz half-width b at {force:g} N", b * 1e3, "mm"))
         rows.append((f"Hertz peak pressure at {force:g} N", p_max / 1e6, "MPa"))
-    rows.append((f"normal law: {clearance.normal_law}", clearance.restitution_coefficient, "c_e"))
-    rows.append((f"friction law: {clearance.friction_law}", clearance.friction_coefficient, "c_f"))
+    rows.append(("friction coefficient c_f", clearance.friction_coefficient, ""))
+    summaries = []
+    for family, (law_key, laws) in FAMILIES.items():
+        law = laws[getattr(clearance, law_key)]
+        rows.append((f"{family} law", law.name, ""))
+        rows += [(f"  {key.name}", getattr(clearance, key.name), key.unit) for key in law.keys]
+        summaries.append(f"{law.name}: {law.summary}")
     if clearance.wear_law == "archard":
-        rows.append(("wear law: archard, k", clearance.archard_coefficient, "1/Pa"))
-    else:
-        rows.append(("wear law: reye, shear strength", clearance.shear_strength / 1e6, "MPa"))
+        rows.append(("  Archard k (as used)", clearance.archard_coefficient, "1/Pa"))
+    table.caption = "\n".join(summaries)
     rows.append((f"sectors per surface ({clearance.wear_distribution})", clearance.sectors, ""))
     for quantity, value, unit in rows:
-        shown = "-" if value is None else f"{value:.6g}"
+        shown = "-" if value is None else value if isinstance(value, str) else f"{value:.6g}"
         table.add_row(escape(quantity), shown, escape(unit))
     return table
 

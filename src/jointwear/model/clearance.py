@@ -9,7 +9,7 @@ does not use is refused, so a model never carries a setting that silently does n
 from typing import Annotated, NamedTuple
 
 from annotated_types import Ge, Gt, Le
-from pydantic import BeforeValidator, model_validator
+from pydantic import BeforeValidator, create_model, model_validator
 
 from ..kernels.laws.friction import FRICTION_LAWS as FRICTION_FAMILY
 from ..kernels.laws.normal import NORMAL_LAWS as NORMAL_FAMILY
@@ -18,7 +18,7 @@ from ..kernels.laws.normal import (
     effective_radius,
     internal_cylinder_stiffness,
 )
-from ..kernels.laws.registry import Law, by_name
+from ..kernels.laws.registry import Key, Law, by_name, family_keys
 from ..kernels.laws.wear import WEAR_LAWS as WEAR_FAMILY
 from ..kernels.laws.wear import hertz_line_contact
 from ..units import Length, Pressure, Speed, WearCoefficient
@@ -48,6 +48,29 @@ def _users(laws: dict[str, Law]) -> dict[str, tuple[str, ...]]:
 
 # Keys that only some laws use: {law key: {key: the laws that use it}}.
 _LAW_KEYS = {law_key: _users(laws) for law_key, laws in FAMILIES.values()}
+# The value type of a law key by its registry unit (a pint unit string; "" a plain number).
+_KEY_TYPES = {"": Number, "m/s": Speed, "Pa": Pressure, "1/Pa": WearCoefficient}
+
+
+def _key_field(key: Key) -> tuple[object, object]:
+    """(annotation, default) of a law's key in the schema, from its registry record."""
+    bounds = [] if key.low is None else [Gt(key.low) if key.positive else Ge(key.low)]
+    bounds += [] if key.high is None else [Le(key.high)]
+    value = Annotated[(_KEY_TYPES[key.unit], *bounds)]
+    if key.default is None:
+        return value | None, None
+    return value, key.default
+
+
+_LawKeys = create_model(
+    "_LawKeys",
+    __base__=Table,
+    **{
+        name: _key_field(key)
+        for _, laws in FAMILIES.values()
+        for name, key in family_keys(tuple(laws.values())).items()
+    },
+)
 
 
 class PackedLaw(NamedTuple):
@@ -59,12 +82,15 @@ class PackedLaw(NamedTuple):
 
 def law_parameters(clearance: "Clearance") -> dict[str, PackedLaw]:
     """Per family ("normal", "friction", "wear"): the chosen law's code and packed parameters."""
-    packed = {}
-    for family, (law_key, laws) in FAMILIES.items():
-        law = laws[getattr(clearance, law_key)]
-        values = {key.name: getattr(clearance, key.name) for key in law.keys}
-        packed[family] = PackedLaw(law.code, law.pack(values))
-    return packed
+    return {family: _packed(clearance, law_key, laws) for family, (law_key, laws) in
+            FAMILIES.items()}  # fmt: skip
+
+
+def _packed(clearance: "Clearance", law_key: str, laws: dict[str, Law]) -> PackedLaw:
+    """The chosen law of one family, packed; ValueError saying what it needs, if it cannot."""
+    law = laws[getattr(clearance, law_key)]
+    values = {key.name: getattr(clearance, key.name) for key in law.keys}
+    return PackedLaw(law.code, law.pack(values))
 
 
 HERTZ_EXPONENT = 1.5  # the exponent the internal-cylinder stiffness formula is for
@@ -79,8 +105,12 @@ def _plain_stiffness(value: object) -> object:
     return value
 
 
-class Clearance(Table):
-    """A revolute joint with clearance: journal in bearing, contact, friction and wear (SI)."""
+class Clearance(_LawKeys):
+    """A revolute joint with clearance: journal in bearing, contact, friction and wear (SI).
+
+    The keys of the laws (restitution, friction speeds, wear coefficients, ...) come from the
+    law registries (``_LawKeys``); the rest are the joint's own.
+    """
 
     bearing_radius: PositiveLength
     journal_radius: PositiveLength
@@ -88,24 +118,13 @@ class Clearance(Table):
     youngs_modulus: Modulus | tuple[Modulus, Modulus]  # both, or [bearing, journal]
     poisson_ratio: Poisson | tuple[Poisson, Poisson]
     normal_law: Annotated[str, one_of(NORMAL_LAWS, "normal law")] = "lankarani_nikravesh"
-    restitution_coefficient: Annotated[Number, Gt(0), Le(1)] | None = None
     exponent: Annotated[Number, Gt(0)] = 1.5
     contact_stiffness: Annotated[Number, Gt(0), BeforeValidator(_plain_stiffness)] | None = None
     min_impact_speed: PositiveSpeed = 1e-3
     contact_tolerance: PositiveLength = 1e-10
     friction_law: Annotated[str, one_of(FRICTION_LAWS, "friction law")] = "ambrosio"
     friction_coefficient: Annotated[Number, Ge(0)]
-    no_friction_speed: Annotated[Speed, Ge(0)] = 1e-4
-    full_friction_speed: PositiveSpeed = 1e-2
-    regularisation_speed: PositiveSpeed = 1e-4
-    static_friction_coefficient: Annotated[Number, Ge(0)] | None = None
-    stiction_speed: PositiveSpeed = 1e-4
-    transition_speed: PositiveSpeed = 1e-2
     wear_law: Annotated[str, one_of(WEAR_LAWS, "wear law")] = "archard"
-    wear_coefficient: Annotated[WearCoefficient, Ge(0)] | None = None
-    dimensionless_wear_coefficient: Annotated[Number, Ge(0)] | None = None
-    hardness: Modulus | None = None
-    shear_strength: Modulus | None = None
     journal_wear_share: Annotated[Number, Ge(0), Le(1)] = 0.5
     wear_distribution: Annotated[str, one_of(WEAR_DISTRIBUTIONS, "wear distribution")] = "hertz"
     wear_feedback: bool = True
@@ -113,7 +132,7 @@ class Clearance(Table):
 
     @model_validator(mode="after")
     def _consistent(self) -> "Clearance":
-        problems = [*self._unused_keys(), *self._missing_keys()]
+        problems = [*self._unused_keys(), *self._law_problems()]
         if self.journal_radius >= self.bearing_radius:
             problems.append(
                 f"journal_radius {self.journal_radius * 1e3:.12g} mm must be smaller than "
@@ -125,9 +144,6 @@ class Clearance(Table):
                 f"contact_tolerance {self.contact_tolerance:g} m must be much smaller than the "
                 f"radial clearance {self.radial_clearance:g} m (default 1e-10 m)"
             )
-        ambrosio = self.friction_law == "ambrosio"
-        if ambrosio and self.full_friction_speed <= self.no_friction_speed:
-            problems.append("full_friction_speed must be larger than no_friction_speed")
         if problems:
             raise ValueError("; ".join(problems))
         return self
@@ -146,33 +162,18 @@ class Clearance(Table):
                     )
         return lines
 
-    def _missing_keys(self) -> list[str]:
+    def _law_problems(self) -> list[str]:
         lines = []
-        if self.normal_law != "hertz" and self.restitution_coefficient is None:
-            lines.append(
-                f"normal_law '{self.normal_law}' needs restitution_coefficient (0 < c_e <= 1)"
-            )
+        for law_key, laws in FAMILIES.values():
+            try:
+                _packed(self, law_key, laws)
+            except ValueError as error:
+                lines.append(f"{law_key} '{getattr(self, law_key)}': {error}")
         if self.exponent != HERTZ_EXPONENT and self.contact_stiffness is None:
             lines.append(
                 f"exponent {self.exponent:g} needs contact_stiffness [N/m^{self.exponent:g}]: "
                 f"the stiffness formula is for exponent {HERTZ_EXPONENT:g}"
             )
-        if self.friction_law == "stick_slip" and self.static_friction_coefficient is None:
-            lines.append("friction_law 'stick_slip' needs static_friction_coefficient")
-        if self.wear_law == "reye" and self.shear_strength is None:
-            lines.append("wear_law 'reye' needs shear_strength (a pressure, e.g. '300 MPa')")
-        if self.wear_law == "archard":
-            by_hardness = (self.dimensionless_wear_coefficient, self.hardness)
-            if self.wear_coefficient is None and None in by_hardness:
-                lines.append(
-                    "wear_law 'archard' needs wear_coefficient (e.g. '8e-14 1/Pa'), or "
-                    "dimensionless_wear_coefficient together with hardness"
-                )
-            elif self.wear_coefficient is not None and by_hardness != (None, None):
-                lines.append(
-                    "give wear_coefficient, or dimensionless_wear_coefficient with hardness, "
-                    "not both"
-                )
         return lines
 
     def _pair(self, value: float | tuple[float, float]) -> tuple[float, float]:

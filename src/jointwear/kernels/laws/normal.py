@@ -119,15 +119,15 @@ NORMAL_LAWS = (
         "K delta^n, no damping (Flores 2009, Eq. 18, D = 0)",
     ),
     Law(
-        "lankarani_nikravesh", 1, (RESTITUTION,), pack_in_order(RESTITUTION.name),
+        "lankarani_nikravesh", 1, (RESTITUTION,), pack_in_order(RESTITUTION),
         "K delta^n [1 + 3 (1 - c_e^2)/4 delta_dot/delta_dot_minus] (Lankarani, Nikravesh 1990)",
     ),
     Law(
-        "hunt_crossley", 2, (RESTITUTION,), pack_in_order(RESTITUTION.name),
+        "hunt_crossley", 2, (RESTITUTION,), pack_in_order(RESTITUTION),
         "K delta^n [1 + 3 (1 - c_e)/2 delta_dot/delta_dot_minus] (Hunt, Crossley 1975)",
     ),
     Law(
-        "flores2011", 3, (RESTITUTION,), pack_in_order(RESTITUTION.name),
+        "flores2011", 3, (RESTITUTION,), pack_in_order(RESTITUTION),
         "K delta^n [1 + 8 (1 - c_e)/(5 c_e) delta_dot/delta_dot_minus] (Flores et al. 2011)",
     ),
 )  # fmt: skip

@@ -51,13 +51,14 @@ def family_keys(family: tuple[Law, ...]) -> dict[str, Key]:
     return keys
 
 
-def pack_in_order(*names: str) -> object:
-    """A ``pack`` that returns the named keys' values in order, each required."""
+def pack_in_order(*keys: Key) -> object:
+    """A ``pack`` that returns the keys' values in order, each required."""
 
     def pack(values: dict) -> tuple[float, ...]:
-        missing = [name for name in names if values.get(name) is None]
+        missing = [k.name + (f" ({k.help})" if k.help else "") for k in keys
+                   if values.get(k.name) is None]  # fmt: skip
         if missing:
             raise ValueError(f"needs {' and '.join(missing)}")
-        return tuple(float(values[name]) for name in names)
+        return tuple(float(values[k.name]) for k in keys)
 
     return pack
