@@ -26,7 +26,6 @@ lint: install
 clean:
 	rm -rf $(VENV) results .pytest_cache
 
-# numba's cache notices edits to a kernel's own file only: after editing a kernel that others
-# import (codes.py, kinematics.py, ...), drop the compiled cache.
+# Drops the compiled cache. Not needed after edits: any kernel edit invalidates all of it.
 clean-cache:
 	find src -name '*.nbi' -delete -o -name '*.nbc' -delete
