@@ -15,6 +15,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .kernels.constraints import evaluate_constraints
+from .kernels.structs import to_struct
 from .model import Model, ModelError
 from .system import System, constraint_count, initial_guess
 
@@ -52,7 +53,8 @@ def _evaluate(system: System, q: NDArray, qd: NDArray) -> tuple[NDArray, NDArray
     m = constraint_count(system.mechanism)
     phi, gamma, phi_t = np.zeros(m), np.zeros(m), np.zeros(m)
     cq = np.zeros((m, q.shape[0]))
-    evaluate_constraints(0.0, q, qd, system.mechanism, phi, cq, gamma, phi_t)
+    # as a struct, the one specialization the step loop compiles too (kernels/structs.py)
+    evaluate_constraints(0.0, q, qd, to_struct(system.mechanism), phi, cq, gamma, phi_t)
     return phi, cq, phi_t
 
 
