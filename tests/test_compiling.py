@@ -33,4 +33,3 @@ def test_no_notice_without_compiling():
     with compile_notice(lambda: starts.append(True), lambda done, total: None):
         f(2.0)
     assert starts == []
-
