@@ -40,43 +40,43 @@ class ElementScratch(NamedTuple):
     journal: JournalScratch
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, inline="always")
 def slot_count(el):
     """Number of contact slots of all elements."""
     return el.journal.ints.shape[0]
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, inline="always")
 def add_forces(el, st, sc, q, qd, g):
     """Evaluate every element at (q, q') and add its contact forces to g [N, N, N m]."""
     journal.add_forces(el.journal, st.journal, sc.journal, q, qd, g)
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, inline="always")
 def penetration_excess(el, st, sc, slot, q, qd):
     """Penetration of a contact slot beyond its contact tolerance at (q, q') [m]."""
     return journal.penetration_excess(el.journal, st.journal, sc.journal, slot, q, qd)
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, inline="always")
 def tolerance(el, slot):
     """Contact tolerance of a slot [m]."""
     return journal.tolerance(el.journal, slot)
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, inline="always")
 def in_contact(st, slot):
     """Whether a slot's contact period is under way."""
     return st.journal.contact_on[slot] == 1
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, inline="always")
 def begin_period(el, st, sc, log, slot, q, qd, info):
     """Open or close a slot's contact period at a step end; True when one opens (info filled)."""
     return journal.begin_period(el.journal, st.journal, sc.journal, log.journal, slot, q, qd, info)
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, inline="always")
 def accumulate(el, st, sc, log, t_old, t_new, q_mid, qd_mid, snap_times, first):
     """Wear, totals and snapshots of the accepted step [t_old, t_new] [s], from its midpoint."""
     journal.accumulate(
@@ -85,13 +85,13 @@ def accumulate(el, st, sc, log, t_old, t_new, q_mid, qd_mid, snap_times, first):
     )  # fmt: skip
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, inline="always")
 def write_outputs(el, sc, row, c):
     """Every element's time-series columns from its last evaluation; the next free column."""
     return journal.write_outputs(el.journal, sc.journal, row, c)
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, inline="always")
 def elastic_energy(el, sc):
     """Elastic energy stored in the contacts of the last evaluation [J]."""
     return journal.elastic_energy(el.journal, sc.journal)
