@@ -6,6 +6,7 @@ import time
 from collections.abc import Callable
 from typing import TYPE_CHECKING
 
+import typer
 from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn, TimeRemainingColumn
 
 from .common import PLAIN, err
@@ -65,9 +66,11 @@ class CompileNotice:
 
     def __init__(self) -> None:
         self.bar = ProgressBar("compiling", "{task.completed}/~{task.total} kernels")
+        self.active = False  # compiling, before the work's first progress report
 
     def started(self) -> None:
         """The first compile of the process has begun."""
+        self.active = True
         err.print(
             "compiling the kernels: the first run after an install or an upgrade (cached after)",
             soft_wrap=True,
@@ -77,10 +80,21 @@ class CompileNotice:
         """Show ``done`` of about ``total`` functions compiled."""
         self.bar(done, total)
 
+    def interrupted(self) -> typer.Exit:
+        """Say that Ctrl-C stopped the compiling (nothing is written then); the exit to raise."""
+        self.bar.close()
+        err.print(
+            "interrupted while compiling the kernels: nothing was written (the next run "
+            "compiles again)",
+            soft_wrap=True,
+        )
+        return typer.Exit(code=130)
+
     def then(self, progress: Callable[[float, float], None]) -> Callable[[float, float], None]:
         """``progress``, removing the compile bar before it shows its own."""
 
         def report(done: float, total: float) -> None:
+            self.active = False
             self.bar.close()
             progress(done, total)
 

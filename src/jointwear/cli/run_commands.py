@@ -55,6 +55,10 @@ def run(
             )  # fmt: skip
     except ModelError as error:
         raise fail(error) from None
+    except KeyboardInterrupt:
+        if compiling.active:
+            raise compiling.interrupted() from None
+        raise
     finally:
         compiling.bar.close()
         bar.close()
