@@ -77,8 +77,9 @@ class CompileNotice:
         )
 
     def __call__(self, done: int, total: int) -> None:
-        """Show ``done`` of about ``total`` functions compiled."""
-        self.bar(done, total)
+        """Show ``done`` of about ``total`` functions compiled (until the work reports)."""
+        if self.active:  # one live display at a time: never beside the work's own bar
+            self.bar(done, total)
 
     def interrupted(self) -> typer.Exit:
         """Say that Ctrl-C stopped the compiling (nothing is written then); the exit to raise."""

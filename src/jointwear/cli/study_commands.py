@@ -175,10 +175,6 @@ def life(
             )
     except ModelError as error:
         raise fail(error) from None
-    except KeyboardInterrupt:
-        if compiling.active:
-            raise compiling.interrupted() from None
-        raise
     finally:
         compiling.bar.close()
         bar.close()

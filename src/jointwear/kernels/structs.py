@@ -8,11 +8,13 @@ the same fields behind one pointer: a call passes one pointer, and reading a fie
 
 ``to_struct(record)`` copies a named tuple's fields into a new ``Struct`` of the same kind (the
 tuple class's name); kernels read its fields with the same attribute names. The arrays are
-shared, not copied: writes through the struct are seen through the tuple the caller kept.
+shared, not copied: writes into them through the struct are seen through the tuple the caller
+kept (scalar fields are copies).
 """
 
 from numba import njit, types
 from numba.core import cgutils
+from numba.core.errors import TypingError
 from numba.experimental import structref
 from numba.experimental.jitclass.base import imp_dtor
 from numba.extending import intrinsic
@@ -48,6 +50,8 @@ def kind_of(record_type: types.Type) -> str:
 
 @intrinsic
 def _struct_from(typingctx, record):
+    if not isinstance(record, types.BaseNamedTuple):
+        raise TypingError(f"to_struct takes a named tuple, not {record}")
     kind = record.instance_class.__name__
     struct_type = Struct(kind, tuple(zip(record.fields, record.types, strict=True)))
 

@@ -56,7 +56,7 @@ def _key_field(key: Key) -> tuple[object, object]:
     """(annotation, default) of a law's key in the schema, from its registry record."""
     bounds = [] if key.low is None else [Gt(key.low) if key.positive else Ge(key.low)]
     bounds += [] if key.high is None else [Le(key.high)]
-    value = Annotated[(_KEY_TYPES[key.unit], *bounds)]
+    value = Annotated[(_KEY_TYPES[key.unit], *bounds)] if bounds else _KEY_TYPES[key.unit]
     if key.default is None:
         return value | None, None
     return value, key.default

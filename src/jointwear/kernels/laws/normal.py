@@ -111,7 +111,7 @@ def flores2011(
 
 RESTITUTION = Key(
     "restitution_coefficient", "", None, positive=True, high=1.0,
-    help="coefficient of restitution c_e (0 < c_e <= 1)",
+    help="coefficient of restitution c_e, 0 < c_e <= 1",
 )  # fmt: skip
 NORMAL_LAWS = (
     Law(
