@@ -52,8 +52,7 @@ def kind_of(record_type: types.Type) -> str:
 def _struct_from(typingctx, record):
     if not isinstance(record, types.BaseNamedTuple):
         raise TypingError(f"to_struct takes a named tuple, not {record}")
-    kind = record.instance_class.__name__
-    struct_type = Struct(kind, tuple(zip(record.fields, record.types, strict=True)))
+    struct_type = Struct(kind_of(record), tuple(zip(record.fields, record.types, strict=True)))
 
     def codegen(context, builder, signature, args):
         payload = context.data_model_manager[struct_type.get_data_type()].get_value_type()
