@@ -222,9 +222,16 @@ def test_first_impact_is_a_single_impact_of_the_slider(slider_crank):
     [
         (
             "normal_law",
-            "lankarani_nikravesch",
+            "jonson",
             "normal law",
-            "hertz, lankarani_nikravesh, hunt_crossley, flores2011",
+            "hertz, johnson, liu, elastic_foundation",
+            "johnson",
+        ),
+        (
+            "damping",
+            "lankarani_nikravesch",
+            "damping law",
+            "none, lankarani_nikravesh, hunt_crossley, flores2011",
             "lankarani_nikravesh",
         ),
         ("friction_law", "ambrosia", "friction law", "coulomb, ambrosio, stick_slip", "ambrosio"),

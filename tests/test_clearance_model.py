@@ -84,15 +84,29 @@ def test_both_joint_orders_give_the_same_motion():
         ('contact_tolerance="1 mm"', "must be much smaller than the radial clearance"),
         ('journal_radius="10 mm"', "journal_radius 10 mm must be smaller than bearing_radius"),
         ('contact_stiffness="1e11 N/m"', "give K as a plain number in SI units"),
-        ("normal_law=hertz", "restitution_coefficient is used by normal_law"),
+        ("damping=none", "restitution_coefficient is used by damping"),
+        ("normal_law=johnson --set exponent=1.2", "exponent is used by normal_law 'hertz' only"),
+        ("normal_law=elastic_foundation", "needs foundation_thickness"),
+        ("foundation_thickness='2 mm'", "foundation_thickness is used by normal_law"),
+        ("damping=lankarani_nikravesh --set normal_law=hunt_crossley", "and one damping"),
         ("exponent=1.2", "exponent 1.2 needs contact_stiffness"),
     ],
 )
 def test_inconsistent_clearance_settings_are_refused(setting, message):
+    settings = [f"joints.coupler_follower.clearance.{s}" for s in setting.split(" --set ")]
     with pytest.raises(jw.ModelError) as error:
-        jw.load_model(FOURBAR, [f"joints.coupler_follower.clearance.{setting}"])
+        jw.load_model(FOURBAR, settings)
     assert message in str(error.value)
     assert str(error.value).startswith("joints[2].clearance")  # one line, naming the field
+
+
+@pytest.mark.parametrize("law", ["lankarani_nikravesh", "hunt_crossley", "flores2011"])
+def test_a_damping_law_as_normal_law_is_hertz_with_that_damping(law):
+    """Model files written before damping was its own key keep their meaning."""
+    old = jw.load_model(FOURBAR, [f"joints.coupler_follower.clearance.normal_law={law}"])
+    new = jw.load_model(FOURBAR, [f"joints.coupler_follower.clearance.damping={law}"])
+    assert old.joints[2].clearance == new.joints[2].clearance
+    assert (new.joints[2].clearance.normal_law, new.joints[2].clearance.damping) == ("hertz", law)
 
 
 def test_absurd_wear_snapshot_count_is_refused_up_front():

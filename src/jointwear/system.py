@@ -77,6 +77,8 @@ def column_names(model: Model) -> list[str]:
         names += [f"{joint.name}_fx", f"{joint.name}_fy"]
     for joint in clearance:
         names += [f"{joint.name}_{c}" for c in jc.OUTPUT_NAMES]
+        if joint.clearance.lubrication != "none":
+            names += [f"{joint.name}_{c}" for c in jc.FILM_OUTPUT_NAMES]
     names += ["energy_kinetic", "energy_potential"]
     if clearance:
         names.append("energy_contact")
@@ -125,9 +127,11 @@ def _clearance_row(
     ints[jc.I_BEARING] = bearing
     ints[jc.I_JOURNAL] = journal
     ints[jc.I_NORMAL] = laws["normal"].code
+    ints[jc.I_DAMPING] = laws["damping"].code
+    ints[jc.I_LUBRICATION] = laws["lubrication"].code
     ints[jc.I_FRICTION] = laws["friction"].code
     ints[jc.I_WEAR] = laws["wear"].code
-    ints[jc.I_PEAK] = int(WEAR_DISTRIBUTIONS[clearance.wear_distribution])
+    ints[jc.I_SPREAD] = WEAR_DISTRIBUTIONS[clearance.wear_distribution]
     ints[jc.I_FEEDBACK] = int(clearance.wear_feedback)
     ints[jc.I_SECTORS] = clearance.sectors
     param = np.zeros(jc.N_PARAMS)
@@ -138,7 +142,7 @@ def _clearance_row(
     param[jc.P_C] = clearance.radial_clearance
     param[jc.P_K] = clearance.stiffness
     param[jc.P_EXP] = clearance.exponent
-    (param[jc.P_CE],) = laws["normal"].parameters
+    (param[jc.P_CE],) = laws["damping"].parameters
     param[jc.P_CF] = clearance.friction_coefficient
     param[[jc.P_F0, jc.P_F1, jc.P_F2]] = laws["friction"].parameters
     param[jc.P_WEAR] = laws["wear"].parameters[0]
@@ -148,6 +152,7 @@ def _clearance_row(
     param[jc.P_ESTAR] = clearance.contact_modulus
     param[jc.P_MIN_SPEED] = clearance.min_impact_speed
     param[jc.P_TOL] = clearance.contact_tolerance
+    param[[jc.P_VISCOSITY, jc.P_BREAKDOWN]] = laws["lubrication"].parameters
     return ints, param
 
 

@@ -183,6 +183,7 @@ RotationalStiffness = Annotated[float, _quantity("[length] * [force]")]
 RotationalDamping = Annotated[float, _quantity("[force] * [length] * [time]")]
 Pressure = Annotated[float, _quantity("[pressure]")]
 WearCoefficient = Annotated[float, _quantity("1/[pressure]")]
+Viscosity = Annotated[float, _quantity("[pressure] * [time]")]
 
 Vector2 = tuple[Length, Length]
 Velocity2 = tuple[Speed, Speed]

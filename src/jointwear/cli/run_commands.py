@@ -97,6 +97,9 @@ def _joint_line(name: str, joint: dict) -> str:
     )
 
 
+PENETRATION_SHARES = (0.01, 0.1, 0.4)  # of the clearance, where check shows the contact law
+
+
 def check(model: ModelPath, overrides: Overrides = None) -> None:
     """Validate MODEL, assemble it and print its degrees of freedom, initial pose and joints.
 
@@ -143,12 +146,19 @@ def _clearance_table(name: str, clearance: Clearance) -> Table:
     table.add_column("quantity")
     table.add_column("value", justify="right")
     table.add_column("unit")
-    rows = [
-        ("radial clearance c = R_B - R_J", clearance.radial_clearance * 1e3, "mm"),
-        (f"contact stiffness K (n = {clearance.exponent:g})", clearance.stiffness, "N/m^n"),
+    rows = [("radial clearance c = R_B - R_J", clearance.radial_clearance * 1e3, "mm")]
+    if clearance.normal_law == "hertz":
+        rows.append(
+            (f"contact stiffness K (n = {clearance.exponent:g})", clearance.stiffness, "N/m^n")
+        )
+    rows += [
         ("contact modulus E*", clearance.contact_modulus / 1e9, "GPa"),
         ("relative radius R* = R_B R_J / c", clearance.relative_radius, "m"),
     ]
+    for share in PENETRATION_SHARES:
+        force, stiffness = clearance.elastic_force(share * clearance.radial_clearance)
+        rows.append((f"force F at delta = {share:.0%} of c", force / 1e3, "kN"))
+        rows.append(("stiffness dF/d(delta) there", stiffness, "N/m"))
     for force in HERTZ_REFERENCE_FORCES:
         b, p_max = clearance.hertz_patch(force)
         rows.append((f"Hertz half-width b at {force:g} N", b * 1e3, "mm"))

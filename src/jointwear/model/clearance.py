@@ -12,24 +12,36 @@ from annotated_types import Ge, Gt, Le
 from pydantic import BeforeValidator, create_model, model_validator
 
 from ..kernels.laws.friction import FRICTION_LAWS as FRICTION_FAMILY
+from ..kernels.laws.lubrication import LUBRICATION_LAWS as LUBRICATION_FAMILY
+from ..kernels.laws.normal import DAMPING_LAWS as DAMPING_FAMILY
 from ..kernels.laws.normal import NORMAL_LAWS as NORMAL_FAMILY
 from ..kernels.laws.normal import (
+    ElasticLaw,
     effective_modulus,
     effective_radius,
+    elastic_force,
+    elastic_stiffness,
+    foundation_modulus,
     internal_cylinder_stiffness,
 )
 from ..kernels.laws.registry import Key, Law, by_name, family_keys
 from ..kernels.laws.wear import WEAR_LAWS as WEAR_FAMILY
 from ..kernels.laws.wear import hertz_line_contact
-from ..units import Length, Pressure, Speed, WearCoefficient
+from ..units import Length, Pressure, Speed, Viscosity, WearCoefficient
 from .tables import Number, Table, one_of
 
 NORMAL_LAWS = by_name(NORMAL_FAMILY)
+DAMPING_LAWS = by_name(DAMPING_FAMILY)
 FRICTION_LAWS = by_name(FRICTION_FAMILY)
 WEAR_LAWS = by_name(WEAR_FAMILY)
-FAMILIES = {"normal": ("normal_law", NORMAL_LAWS), "friction": ("friction_law", FRICTION_LAWS),
-            "wear": ("wear_law", WEAR_LAWS)}  # fmt: skip
-WEAR_DISTRIBUTIONS = {"hertz": False, "peak": True}  # value: paper-style single sector
+LUBRICATION_LAWS = by_name(LUBRICATION_FAMILY)
+FAMILIES = {"normal": ("normal_law", NORMAL_LAWS), "damping": ("damping", DAMPING_LAWS),
+            "friction": ("friction_law", FRICTION_LAWS), "wear": ("wear_law", WEAR_LAWS),
+            "lubrication": ("lubrication", LUBRICATION_LAWS)}  # fmt: skip
+# How a step's wear goes into the sectors; the value is the kernel's code (journal.I_SPREAD).
+WEAR_DISTRIBUTIONS = {"hertz": 0, "peak": 1, "elastic_foundation": 2}
+# Before damping was its own key, normal_law named a damped Hertz law: still read that way.
+_DAMPED_HERTZ = ("lankarani_nikravesh", "hunt_crossley", "flores2011")
 
 PositiveLength = Annotated[Length, Gt(0)]
 Modulus = Annotated[Pressure, Gt(0)]
@@ -49,7 +61,8 @@ def _users(laws: dict[str, Law]) -> dict[str, tuple[str, ...]]:
 # Keys that only some laws use: {law key: {key: the laws that use it}}.
 _LAW_KEYS = {law_key: _users(laws) for law_key, laws in FAMILIES.values()}
 # The value type of a law key by its registry unit (a pint unit string; "" a plain number).
-_KEY_TYPES = {"": Number, "m/s": Speed, "Pa": Pressure, "1/Pa": WearCoefficient}
+_KEY_TYPES = {"": Number, "m": Length, "m/s": Speed, "Pa": Pressure, "1/Pa": WearCoefficient,
+              "Pa*s": Viscosity}  # fmt: skip
 
 
 def _key_field(key: Key) -> tuple[object, object]:
@@ -117,7 +130,8 @@ class Clearance(_LawKeys):
     width: PositiveLength
     youngs_modulus: Modulus | tuple[Modulus, Modulus]  # both, or [bearing, journal]
     poisson_ratio: Poisson | tuple[Poisson, Poisson]
-    normal_law: Annotated[str, one_of(NORMAL_LAWS, "normal law")] = "lankarani_nikravesh"
+    normal_law: Annotated[str, one_of(NORMAL_LAWS, "normal law")] = "hertz"
+    damping: Annotated[str, one_of(DAMPING_LAWS, "damping law")] = "lankarani_nikravesh"
     exponent: Annotated[Number, Gt(0)] = 1.5
     contact_stiffness: Annotated[Number, Gt(0), BeforeValidator(_plain_stiffness)] | None = None
     min_impact_speed: PositiveSpeed = 1e-3
@@ -127,8 +141,23 @@ class Clearance(_LawKeys):
     wear_law: Annotated[str, one_of(WEAR_LAWS, "wear law")] = "archard"
     journal_wear_share: Annotated[Number, Ge(0), Le(1)] = 0.5
     wear_distribution: Annotated[str, one_of(WEAR_DISTRIBUTIONS, "wear distribution")] = "hertz"
+    lubrication: Annotated[str, one_of(LUBRICATION_LAWS, "lubrication")] = "none"
     wear_feedback: bool = True
     sectors: Annotated[int, Ge(4), Le(100_000)] = 36
+
+    @model_validator(mode="before")
+    @classmethod
+    def _damped_hertz(cls, data: object) -> object:
+        """Read normal_law = "<damping law>" as a Hertz law with that damping."""
+        if not isinstance(data, dict) or data.get("normal_law") not in _DAMPED_HERTZ:
+            return data
+        law = data["normal_law"]
+        if data.get("damping", law) != law:
+            raise ValueError(
+                f"normal_law '{law}' is a Hertz law with damping '{law}', and damping is "
+                f"'{data['damping']}'; give normal_law = \"hertz\" and one damping"
+            )
+        return {**data, "normal_law": "hertz", "damping": law}
 
     @model_validator(mode="after")
     def _consistent(self) -> "Clearance":
@@ -169,7 +198,25 @@ class Clearance(_LawKeys):
                 _packed(self, law_key, laws)
             except ValueError as error:
                 lines.append(f"{law_key} '{getattr(self, law_key)}': {error}")
-        if self.exponent != HERTZ_EXPONENT and self.contact_stiffness is None:
+        power_law = {"exponent": self.exponent != HERTZ_EXPONENT,
+                     "contact_stiffness": self.contact_stiffness is not None}  # fmt: skip
+        for key in (key for key, given in power_law.items() if given):
+            if self.normal_law != "hertz":
+                lines.append(
+                    f"{key} is used by normal_law 'hertz' only, and this joint's normal_law is "
+                    f"'{self.normal_law}' (its stiffness follows from the materials and "
+                    'geometry); remove it or choose normal_law = "hertz"'
+                )
+        if self.normal_law == "elastic_foundation" and self.poisson_ratios[0] >= 0.5:
+            lines.append(
+                "normal_law 'elastic_foundation' needs the bearing's poisson_ratio below 0.5 "
+                "(its layer modulus (1 - nu) E / ((1 + nu)(1 - 2 nu)) is infinite at 0.5)"
+            )
+        if (
+            self.normal_law == "hertz"
+            and self.exponent != HERTZ_EXPONENT
+            and self.contact_stiffness is None
+        ):
             lines.append(
                 f"exponent {self.exponent:g} needs contact_stiffness [N/m^{self.exponent:g}]: "
                 f"the stiffness formula is for exponent {HERTZ_EXPONENT:g}"
@@ -207,13 +254,29 @@ class Clearance(_LawKeys):
 
     @property
     def stiffness(self) -> float:
-        """K [N/m^exponent]: ``contact_stiffness`` if given, else the internal-cylinder formula."""
+        """The elastic law's constant K, as the kernels read it.
+
+        hertz: ``contact_stiffness`` if given, else the internal-cylinder formula
+        [N/m^exponent]; elastic_foundation: (K_f / h) R_B [Pa], the layer on the bearing;
+        0 for the laws that need none.
+        """
+        (e_b, e_j), (nu_b, nu_j) = self.moduli, self.poisson_ratios
+        if self.normal_law == "elastic_foundation":
+            return foundation_modulus(e_b, nu_b) / self.foundation_thickness * self.bearing_radius
+        if self.normal_law != "hertz":
+            return 0.0
         if self.contact_stiffness is not None:
             return self.contact_stiffness
-        (e_b, e_j), (nu_b, nu_j) = self.moduli, self.poisson_ratios
         return internal_cylinder_stiffness(
             self.bearing_radius, self.journal_radius, e_b, nu_b, e_j, nu_j
         )
+
+    def elastic_force(self, delta: float) -> tuple[float, float]:
+        """(force [N], stiffness dF/d(delta) [N/m]) of the elastic law at delta [m], unworn."""
+        code = ElasticLaw[self.normal_law.upper()]
+        args = (delta, self.stiffness, self.exponent, self.contact_modulus,
+                self.radial_clearance, self.width)  # fmt: skip
+        return elastic_force(code, *args), elastic_stiffness(code, *args)
 
     @property
     def archard_coefficient(self) -> float:

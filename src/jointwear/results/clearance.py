@@ -18,7 +18,9 @@ import pandas as pd
 from numpy.typing import NDArray
 
 from ..kernels.elements import journal as cs
+from ..kernels.laws.normal import ElasticLaw
 from ..model import Model
+from ..model.clearance import Clearance
 
 SURFACES = ("bearing", "journal")
 UM = 1e6  # micrometres per metre, for messages and figures
@@ -99,7 +101,10 @@ def joint_summaries(
             "sliding_distance_m": row[cs.T_SLIDING],
             "energy_dissipated_damping_j": row[cs.T_DAMPING_ENERGY],
             "energy_dissipated_friction_j": row[cs.T_FRICTION_ENERGY],
+            "outside_law_ranges": _outside_ranges(c, row, duration),
         }
+        if c.lubrication != "none":
+            entry["energy_dissipated_film_j"] = row[cs.T_FILM_ENERGY]
         for s, surface in enumerate(SURFACES):
             depths = wear[k, s, : c.sectors]
             peak = int(np.argmax(depths))
@@ -110,6 +115,37 @@ def joint_summaries(
             )
         summaries[joint.name] = {key: _plain(value) for key, value in entry.items()}
     return summaries
+
+
+def _outside_ranges(c: Clearance, row: NDArray[np.float64], duration: float) -> dict:
+    """Per checked assumption of the joint's laws: its limit, the largest value, the time beyond.
+
+    Only the assumptions of the laws this joint uses (``kernels.elements.journal``).
+    """
+    checks = {
+        "penetration_over_clearance": (
+            cs.T_DEPTH_TIME,
+            cs.T_DEPTH_MAX,
+            cs.depth_limit(ElasticLaw[c.normal_law.upper()]),
+        )
+    }
+    if c.normal_law == "hertz" or c.wear_distribution != "elastic_foundation":
+        checks["hertz_half_width_over_journal_radius"] = (
+            cs.T_PATCH_TIME,
+            cs.T_PATCH_MAX,
+            cs.PATCH_LIMIT,
+        )
+    if c.lubrication != "none":
+        checks["eccentricity_ratio"] = (cs.T_FILM_TIME, cs.T_FILM_MAX, c.film_breakdown)
+    return {
+        name: {
+            "limit": float(limit),
+            "largest": float(row[largest]),
+            "time_beyond_s": float(row[time]),
+            "time_fraction_beyond": float(row[time] / duration) if duration else 0.0,
+        }
+        for name, (time, largest, limit) in checks.items()
+    }
 
 
 def _plain(value: object) -> object:

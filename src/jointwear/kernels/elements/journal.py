@@ -26,21 +26,39 @@ from typing import NamedTuple
 import numpy as np
 from numba import njit
 
+from ..kinematics import angular_velocity
+from ..laws.foundation import foundation_load, foundation_points, spread_foundation_wear
 from ..laws.friction import is_sliding, tangential_force
-from ..laws.normal import hertz, normal_force
+from ..laws.lubrication import film_force_components, film_power_loss
+from ..laws.normal import ElasticLaw, damped, elastic_force
+from ..laws.normal import elastic_energy as law_energy
 from ..laws.wear import WearLaw, accumulate_wear, depth_at, hertz_line_contact, wear_coefficient
-from .journal_geometry import apply_contact, contact_velocities, eccentricity, surface_angles
+from .journal_geometry import (
+    apply_at_centres,
+    apply_contact,
+    contact_velocities,
+    eccentricity,
+    surface_angles,
+)
 
 # Columns of JournalTable.ints.
 I_BEARING = 0  # bearing body (-1: ground)
 I_JOURNAL = 1  # journal body
-I_NORMAL = 2  # normal law code (laws.normal.NORMAL_LAWS)
+I_NORMAL = 2  # elastic law code (laws.normal.NORMAL_LAWS)
 I_FRICTION = 3  # friction law code (laws.friction.FRICTION_LAWS)
 I_WEAR = 4  # wear law code (laws.wear.WEAR_LAWS)
-I_PEAK = 5  # 1: paper-style wear (peak pressure into one sector), 0: Hertz spread
+I_SPREAD = 5  # wear distribution: SPREAD_HERTZ, SPREAD_PEAK or SPREAD_FOUNDATION
 I_FEEDBACK = 6  # 1: the worn profile feeds back into the penetration
 I_SECTORS = 7  # sectors of each surface
-N_INTS = 8
+I_DAMPING = 8  # damping law code (laws.normal.DAMPING_LAWS)
+I_LUBRICATION = 9  # lubrication code (laws.lubrication.LUBRICATION_LAWS), 0: dry
+N_INTS = 10
+
+# Wear distributions (I_SPREAD): Hertz's ellipse over the sectors it covers, its peak into
+# one sector (the paper's), or the elastic foundation's pressure on the worn surfaces.
+SPREAD_HERTZ = 0
+SPREAD_PEAK = 1
+SPREAD_FOUNDATION = 2
 
 # Columns of JournalTable.params (SI).
 P_SB_X = 0  # bearing centre in the bearing body's frame [m]
@@ -50,9 +68,9 @@ P_SJ_Y = 3
 P_RB = 4  # bearing radius [m]
 P_RJ = 5  # journal radius [m]
 P_C = 6  # radial clearance [m]
-P_K = 7  # contact stiffness K [N/m^n]
-P_EXP = 8  # exponent n [-]
-P_CE = 9  # normal law parameter: restitution coefficient [-]
+P_K = 7  # elastic law's stiffness: K [N/m^n] (hertz), (K_f / h) R [Pa] (elastic foundation)
+P_EXP = 8  # exponent n [-] (hertz)
+P_CE = 9  # damping law parameter: restitution coefficient [-]
 P_CF = 10  # friction coefficient [-]
 P_F0 = 11  # friction law parameters p0, p1, p2 (laws.friction)
 P_F1 = 12
@@ -64,7 +82,9 @@ P_RSTAR = 17  # relative radius R* [m]
 P_ESTAR = 18  # contact modulus E* [Pa]
 P_MIN_SPEED = 19  # floor of the impact speed [m/s]
 P_TOL = 20  # contact tolerance [m]
-N_PARAMS = 21
+P_VISCOSITY = 21  # lubricant's dynamic viscosity [Pa s]
+P_BREAKDOWN = 22  # eccentricity ratio where the film hands over to solid contact [-]
+N_PARAMS = 23
 
 # Columns of JournalScratch.contact (the last evaluation).
 C_EX = 0  # eccentricity [m]
@@ -76,12 +96,19 @@ C_FN = 5  # normal force [N]
 C_FT = 6  # friction force [N]
 C_THETA_B = 7  # direction of n in the bearing's frame [rad]
 C_THETA_J = 8  # direction of n in the journal's frame [rad]
-C_ELASTIC = 9  # undamped part K delta^n of the normal force [N]
+C_ELASTIC = 9  # undamped (elastic) part of the normal force [N]
 C_FX = 10  # contact force on the journal, global [N]
 C_FY = 11
-N_CONTACT = 12
+C_EPS = 12  # eccentricity ratio e / c_local [-]
+C_FILM_MIN = 13  # minimum film thickness c_local - e, 0 in solid contact [m]
+C_FILM_X = 14  # film force on the journal, global [N]
+C_FILM_Y = 15
+C_FILM_POWER = 16  # power dissipated in the film [W]
+N_CONTACT = 17
 OUTPUTS = (C_FX, C_FY, C_EX, C_EY, C_DELTA, C_FN, C_FT)  # time-series columns, in order
 OUTPUT_NAMES = ("fx", "fy", "ex", "ey", "delta", "fn", "ft")
+FILM_OUTPUTS = (C_EPS, C_FILM_MIN, C_FILM_X, C_FILM_Y, C_FILM_POWER)  # lubricated joints
+FILM_OUTPUT_NAMES = ("eps", "film_min", "film_fx", "film_fy", "film_power")
 
 # Columns of JournalLog.totals.
 T_CONTACT_TIME = 0  # time with a positive normal force [s]
@@ -92,7 +119,18 @@ T_DAMPING_ENERGY = 4  # energy dissipated by the damping of the normal force [J]
 T_FRICTION_ENERGY = 5  # energy dissipated by friction [J]
 T_WORN_VOLUME = 6  # volume removed from both surfaces [m^3]
 T_SLIDING = 7  # sliding distance while in contact and sliding [m]
-N_TOTALS = 8
+T_FILM_ENERGY = 8  # energy dissipated in the lubricant film [J]
+T_PATCH_TIME = 9  # time the Hertz half-width exceeded PATCH_LIMIT R_J [s]
+T_PATCH_MAX = 10  # largest Hertz half-width / R_J [-]
+T_DEPTH_TIME = 11  # time the penetration exceeded the law's range [s]
+T_DEPTH_MAX = 12  # largest penetration / c [-]
+T_FILM_TIME = 13  # time the eccentricity ratio exceeded the film's range [s]
+T_FILM_MAX = 14  # largest eccentricity ratio [-]
+N_TOTALS = 15
+
+# The laws' ranges (outside them a joint is still computed, and the run reports it).
+PATCH_LIMIT = 0.1  # Hertz half-width b / R_J: a line contact's patch small against the pin
+DEPTH_LIMIT = 0.1  # penetration / c of Hertz, Liu and the foundation: small against the gap
 
 # Columns of an onset's entry in the impact log.
 IMPACT_SPEED = 0  # penetration rate at onset [m/s]
@@ -153,6 +191,21 @@ def make_journals(
 
 
 @njit(cache=True, no_cpython_wrapper=True)
+def _profiles(law, state, k):
+    """Joint k's worn profiles (bearing, journal) [m]; empty without wear feedback."""
+    sectors = law[I_SECTORS] if law[I_FEEDBACK] else 0
+    return state.wear[k, 0, :sectors], state.wear[k, 1, :sectors]
+
+
+@njit(cache=True, no_cpython_wrapper=True)
+def _depth(theta, depths):
+    """Wear depth of a profile in direction theta [rad]; 0 for an empty profile [m]."""
+    if depths.shape[0] == 0:
+        return 0.0
+    return depth_at(theta, depths)
+
+
+@njit(cache=True, no_cpython_wrapper=True)
 def evaluate(table, state, scratch, k, q, qd):
     """Geometry and forces of joint k at state (q, q'), into scratch.contact[k]."""
     law = table.ints[k]
@@ -171,42 +224,90 @@ def evaluate(table, state, scratch, k, q, qd):
         return
     nx, ny = ex / e, ey / e
     theta_b, theta_j = surface_angles(q, ib, ij, nx, ny)
-    gap = p[P_C]
-    if law[I_FEEDBACK]:
-        sectors = law[I_SECTORS]
-        gap += depth_at(theta_b, state.wear[k, 0, :sectors])
-        gap += depth_at(theta_j, state.wear[k, 1, :sectors])
+    wear_b, wear_j = _profiles(law, state, k)
+    gap = p[P_C] + _depth(theta_b, wear_b) + _depth(theta_j, wear_j)
     delta = e - gap
+    elastic = 0.0
+    foundation = law[I_NORMAL] == ElasticLaw.ELASTIC_FOUNDATION
+    if foundation and e > p[P_C]:  # the worn surfaces touch where they interfere most
+        elastic, _, peak = foundation_load(
+            e, p[P_C], theta_b, wear_b, theta_j, wear_j, p[P_RB], p[P_WIDTH],
+            p[P_K] / p[P_RB], foundation_points(0.5 * math.pi, law[I_SECTORS]),
+        )  # fmt: skip
+        delta = max(delta, peak)
     delta_dot, v_t = contact_velocities(qd, ib, ij, nx, ny, dex, dey, p[P_RB], p[P_RJ])
     out[C_DELTA] = delta
     out[C_DDOT] = delta_dot
     out[C_VT] = v_t
     out[C_THETA_B] = theta_b
     out[C_THETA_J] = theta_j
+    if law[I_LUBRICATION]:
+        w_j, w_b = angular_velocity(qd, ij), angular_velocity(qd, ib)
+        gamma_dot = (nx * dey - ny * dex) / e
+        _film(law, p, out, e, gap, delta, delta_dot, gamma_dot, w_j + w_b, w_j - w_b)
     if delta <= 0.0:
         return
     impact_speed = max(delta_dot, p[P_MIN_SPEED])  # until the loop records the onset
     if state.contact_on[k]:
         impact_speed = state.impact_speed[k]
-    f_n = normal_force(law[I_NORMAL], delta, delta_dot, impact_speed, p[P_K], p[P_EXP], p[P_CE])
+    if not foundation:
+        elastic = elastic_force(
+            law[I_NORMAL], delta, p[P_K], p[P_EXP], p[P_ESTAR], p[P_C], p[P_WIDTH]
+        )
+    f_n = damped(elastic, delta_dot, impact_speed, law[I_DAMPING], p[P_CE])
     f_t = tangential_force(law[I_FRICTION], v_t, f_n, p[P_CF], p[P_F0], p[P_F1], p[P_F2])
     out[C_FN] = f_n
     out[C_FT] = f_t
-    out[C_ELASTIC] = hertz(delta, p[P_K], p[P_EXP])
+    out[C_ELASTIC] = elastic
     out[C_FX] = -f_n * nx - f_t * ny
     out[C_FY] = -f_n * ny + f_t * nx
 
 
 @njit(cache=True, no_cpython_wrapper=True)
+def _film(law, p, out, e, gap, delta, delta_dot, gamma_dot, w, w_rel):
+    """Film force and power of a lubricated joint into out (C_EPS, C_FILM_*).
+
+    e, gap [m]: eccentricity and local clearance; w, w_rel [rad/s]: sum and difference of
+    the journal's and bearing's angular speeds. Up to the eccentricity ratio eps_b
+    (``P_BREAKDOWN``) the film carries the journal alone. Beyond it the film force is that
+    at eps_b with the current rates (the formulas grow without bound towards eps = 1), and
+    once the surfaces touch it fades out as the penetration grows from 0 to (1 - eps_b) c,
+    by the smooth step 1 - 3 x^2 + 2 x^3, while the solid contact takes over: the force is
+    continuous throughout, and the surfaces wear only while they touch.
+    """
+    breakdown = p[P_BREAKDOWN]
+    out[C_EPS] = e / gap
+    out[C_FILM_MIN] = max(0.0, -delta)
+    weight = 1.0
+    if delta > 0.0:
+        x = min(1.0, delta / ((1.0 - breakdown) * gap))
+        weight = 1.0 - x * x * (3.0 - 2.0 * x)
+    if weight == 0.0:
+        return
+    args = (min(e / gap, breakdown), delta_dot / gap, gamma_dot, w)
+    fluid = (p[P_VISCOSITY], p[P_RJ], p[P_WIDTH], gap)
+    f_r, f_t = film_force_components(law[I_LUBRICATION], *args, *fluid)
+    nx, ny = out[C_EX] / e, out[C_EY] / e
+    out[C_FILM_X] = weight * (f_r * nx - f_t * ny)
+    out[C_FILM_Y] = weight * (f_r * ny + f_t * nx)
+    out[C_FILM_POWER] = weight * film_power_loss(law[I_LUBRICATION], *args, w_rel, *fluid)
+
+
+@njit(cache=True, no_cpython_wrapper=True)
 def add_forces(table, state, scratch, q, qd, g):
-    """Evaluate every joint and add its contact forces to g [N, N, N m]."""
+    """Evaluate every joint and add its contact and film forces to g [N, N, N m]."""
     for k in range(table.ints.shape[0]):
         evaluate(table, state, scratch, k, q, qd)
         c = scratch.contact[k]
+        p = table.params[k]
+        if c[C_FILM_X] != 0.0 or c[C_FILM_Y] != 0.0:
+            apply_at_centres(
+                q, g, table.ints[k, I_BEARING], p[P_SB_X], p[P_SB_Y],
+                table.ints[k, I_JOURNAL], p[P_SJ_X], p[P_SJ_Y], c[C_FILM_X], c[C_FILM_Y],
+            )  # fmt: skip
         if c[C_FN] == 0.0 and c[C_FT] == 0.0:
             continue
         e = math.hypot(c[C_EX], c[C_EY])
-        p = table.params[k]
         apply_contact(
             q, g,
             table.ints[k, I_BEARING], p[P_SB_X], p[P_SB_Y],
@@ -274,18 +375,66 @@ def _wear_surfaces(table, state, scratch, k, ds):
         coef = wear_coefficient(law[I_WEAR], abs(c[C_FT]) / f_n, p[P_WEAR])
     else:
         coef = wear_coefficient(law[I_WEAR], p[P_WEAR], 0.0)
-    b, _ = hertz_line_contact(f_n, p[P_RSTAR], p[P_ESTAR], p[P_WIDTH])
-    peak = law[I_PEAK] == 1
     sectors = law[I_SECTORS]
     share = p[P_SHARE]
     bearing = state.wear[k, 0, :sectors]
     journal = state.wear[k, 1, :sectors]
+    if law[I_SPREAD] == SPREAD_FOUNDATION:
+        e = math.hypot(c[C_EX], c[C_EY])
+        wear_b, wear_j = _profiles(law, state, k)
+        points = foundation_points(0.5 * math.pi, sectors)
+        volume = coef * f_n * ds
+        args = (e, p[P_C], c[C_THETA_B], wear_b, c[C_THETA_J], wear_j, points)
+        return spread_foundation_wear(
+            bearing, c[C_THETA_B], p[P_RB], p[P_WIDTH], (1.0 - share) * volume, *args
+        ) + spread_foundation_wear(
+            journal, c[C_THETA_J], p[P_RJ], p[P_WIDTH], share * volume, *args
+        )
+    b, _ = hertz_line_contact(f_n, p[P_RSTAR], p[P_ESTAR], p[P_WIDTH])
+    peak = law[I_SPREAD] == SPREAD_PEAK
     volume = accumulate_wear(
         bearing, c[C_THETA_B], p[P_RB], p[P_WIDTH], f_n, b, ds, coef, 1.0 - share, peak
     )
     return volume + accumulate_wear(
         journal, c[C_THETA_J], p[P_RJ], p[P_WIDTH], f_n, b, ds, coef, share, peak
     )
+
+
+@njit(cache=True)
+def depth_limit(law: int) -> float:
+    """Penetration / c up to which the elastic law ``law`` holds [-].
+
+    Johnson's up to delta_s = 8 e^-3 dR, where it hands over to its tangent; the others up
+    to ``DEPTH_LIMIT`` (small-clearance geometry, and the small-strain fits).
+    """
+    if law == ElasticLaw.JOHNSON:
+        return 8.0 * math.exp(-3.0)
+    return DEPTH_LIMIT
+
+
+@njit(cache=True, no_cpython_wrapper=True)
+def _track_ranges(law, p, c, totals, h):
+    """Time and extent of the step [s] beyond the laws' ranges, into totals (T_*_TIME, _MAX).
+
+    The Hertz patch is checked where Hertz's line contact is used (the hertz law, or the
+    hertz and peak wear distributions), the film's eccentricity where the joint is lubricated.
+    """
+    if c[C_FN] > 0.0:
+        if law[I_NORMAL] == ElasticLaw.HERTZ or law[I_SPREAD] != SPREAD_FOUNDATION:
+            b, _ = hertz_line_contact(c[C_FN], p[P_RSTAR], p[P_ESTAR], p[P_WIDTH])
+            _beyond(totals, T_PATCH_TIME, T_PATCH_MAX, b / p[P_RJ], PATCH_LIMIT, h)
+        _beyond(
+            totals, T_DEPTH_TIME, T_DEPTH_MAX, c[C_DELTA] / p[P_C], depth_limit(law[I_NORMAL]), h
+        )
+    if law[I_LUBRICATION]:
+        _beyond(totals, T_FILM_TIME, T_FILM_MAX, c[C_EPS], p[P_BREAKDOWN], h)
+
+
+@njit(cache=True, no_cpython_wrapper=True)
+def _beyond(totals, time_slot, max_slot, value, limit, h):
+    totals[max_slot] = max(totals[max_slot], value)
+    if value > limit:
+        totals[time_slot] += h
 
 
 @njit(cache=True, no_cpython_wrapper=True)
@@ -310,6 +459,8 @@ def accumulate(table, state, scratch, log, t_old, t_new, q_mid, qd_mid, snap_tim
             if is_sliding(table.ints[k, I_FRICTION], c[C_VT], p[P_F0], p[P_F1], p[P_F2]):
                 sliding_speed = abs(c[C_VT])
                 totals[T_SLIDING] += sliding_speed * h
+        totals[T_FILM_ENERGY] += c[C_FILM_POWER] * h
+        _track_ranges(table.ints[k], table.params[k], c, totals, h)
         t_from = t_old
         s = first
         while s < snap_times.shape[0] and snap_times[s] <= t_new:  # split the wear there
@@ -331,22 +482,27 @@ def accumulate(table, state, scratch, log, t_old, t_new, q_mid, qd_mid, snap_tim
 def write_outputs(table, scratch, row, c):
     """Write each joint's ``OUTPUTS`` from its last evaluation into row from column c.
 
-    Returns the next free column.
+    A lubricated joint also writes its ``FILM_OUTPUTS``. Returns the next free column.
     """
     for k in range(table.ints.shape[0]):
         for i in range(len(OUTPUTS)):
             row[c + i] = scratch.contact[k, OUTPUTS[i]]
         c += len(OUTPUTS)
+        if table.ints[k, I_LUBRICATION]:
+            for i in range(len(FILM_OUTPUTS)):
+                row[c + i] = scratch.contact[k, FILM_OUTPUTS[i]]
+            c += len(FILM_OUTPUTS)
     return c
 
 
 @njit(cache=True, no_cpython_wrapper=True)
 def elastic_energy(table, scratch):
-    """Elastic energy K delta^(n+1) / (n+1) stored in the last evaluated contacts [J]."""
+    """Elastic energy stored in the last evaluated contacts [J]."""
     energy = 0.0
     for k in range(table.ints.shape[0]):
-        delta = scratch.contact[k, C_DELTA]
-        if delta > 0.0:
-            n = table.params[k, P_EXP]
-            energy += table.params[k, P_K] * delta ** (n + 1.0) / (n + 1.0)
+        p = table.params[k]
+        energy += law_energy(
+            table.ints[k, I_NORMAL], scratch.contact[k, C_DELTA], p[P_K], p[P_EXP],
+            p[P_ESTAR], p[P_C], p[P_WIDTH],
+        )  # fmt: skip
     return energy

@@ -72,6 +72,16 @@ def apply_contact(q, g, ib, sb_x, sb_y, ij, sj_x, sj_y, nx, ny, r_b, r_j, f_n, f
 
 
 @njit(cache=True)
+def apply_at_centres(q, g, ib, sb_x, sb_y, ij, sj_x, sj_y, fx, fy):
+    """Add (fx, fy) [N] on the journal and minus it on the bearing, through their centres.
+
+    A lubricant film's pressure is radial, so its resultant passes through both centres.
+    """
+    _apply_at(q, g, ij, sj_x, sj_y, 0.0, 0.0, fx, fy)
+    _apply_at(q, g, ib, sb_x, sb_y, 0.0, 0.0, -fx, -fy)
+
+
+@njit(cache=True)
 def _apply_at(q, g, b, s_x, s_y, off_x, off_y, fx, fy):
     """Force (fx, fy) at the point off from body point s (global offset) of body b."""
     if b < 0:

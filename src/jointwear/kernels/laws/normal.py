@@ -1,21 +1,29 @@
-"""Normal contact force laws of a clearance joint, and the stiffness of its contact.
+"""Normal contact force of a clearance joint: elastic laws, hysteresis damping, stiffness.
 
 | symbol | meaning | unit | paper |
 |---|---|---|---|
-| delta | penetration, e - c_local | m | Eq. 15 |
+| delta | penetration, e - c_local | m | Flores 2009, Eq. 15 |
 | delta_dot | penetration rate (> 0 while approaching) | m/s | Eq. 18 |
 | delta_dot_minus | penetration rate at contact onset (> 0) | m/s | Eq. 18 |
-| k | generalised contact stiffness K | N/m^n | Eq. 18 |
-| n | exponent of the penetration (1.5 for metals) | - | Eq. 18 |
+| k, n | stiffness K and exponent of a power law K delta^n | N/m^n, - | Eq. 18 |
 | c_e | coefficient of restitution, 0 < c_e <= 1 | - | Table 2 |
-| f_n | normal force, never negative (a contact never pulls) | N | Eq. 17 |
-| e_b, nu_b; e_j, nu_j | Young's modulus, Poisson's ratio of bearing, journal | Pa, - | Table 2 |
-| r_b, r_j | bearing and journal radii, r_b > r_j | m | Fig. 2 |
+| chi | hysteresis factor of a damping law, chi(c_e) | - | |
+| e_star | contact modulus E*, 1/E* = (1 - nu_B^2)/E_B + (1 - nu_J^2)/E_J | Pa | |
+| d_r | radial clearance Delta R = R_B - R_J | m | |
+| width | joint width L | m | |
+| f | force per unit width F / L | N/m | |
+| f_e, f_n | elastic force; normal force, never negative (a contact never pulls) | N | Eq. 17 |
 
-The damped laws share one form, F = K delta^n (1 + chi delta_dot / delta_dot_minus),
-clamped at zero: they differ only in the hysteresis factor chi(c_e). ``delta_dot_minus``
-must be positive; the caller floors it (SPEC sec. 3). A non-positive value means no
-recorded approach speed, and these laws then fall back to the undamped Hertz force.
+The force is an elastic law times a damping factor, chosen separately:
+F = f_e(delta) (1 + chi delta_dot / delta_dot_minus), clamped at zero. ``delta_dot_minus``
+must be positive; the caller floors it (SPEC sec. 3). A non-positive value means no recorded
+approach speed, and the force is then the elastic one.
+
+The damping laws were derived for Hertz's K delta^n, but to first order in (1 - c_e) the energy
+they dissipate in an impact does not depend on the elastic law: with x = delta_dot /
+delta_dot_minus ~ sqrt(1 - U(delta) / U_max), U the elastic energy, the loop integral of
+chi f_e x d(delta) is (4/3) chi U_max for any f_e. So each damping law keeps its restitution
+with every elastic law below (tests/test_normal_laws.py measures it).
 
 References
 ----------
@@ -25,20 +33,41 @@ K.H. Hunt, F.R.E. Crossley, "Coefficient of restitution interpreted as damping i
 vibroimpact", J. Appl. Mech. 42 (1975) 440-445.
 P. Flores, M. Machado, M.T. Silva, J.M. Martins, "On the continuous contact force models
 for soft materials in multibody dynamics", Multibody Syst. Dyn. 25 (2011) 357-375.
-K.L. Johnson, Contact Mechanics, Cambridge University Press (1985), ch. 4.
+K.L. Johnson, Contact Mechanics, Cambridge University Press (1985), secs. 4.2 and 5.3.
+C.S. Liu, K. Zhang, R. Yang, "The FEM analysis and approximate model for cylindrical joints
+with clearances", Mech. Mach. Theory 42 (2007) 183-197.
+C.M. Pereira, A.L. Ramalho, J.A. Ambrosio, "A critical overview of internal and external
+cylinder contact force models", Nonlinear Dyn. 63 (2011) 681-697.
+M. Mukras, N.H. Kim, N.A. Mauntler, T.L. Schmitz, W.G. Sawyer, "Comparison between elastic
+foundation and contact force models in wear analysis of planar multibody system", J. Tribol.
+132 (2010) 031604.
+
+Pereira et al.'s own internal-contact law, F = (a dR + b) L E* delta^n / dR with a = 0.965,
+b = 0.0965 and n fitted in dR, is not offered: the paper's text of the fit (the expression
+of n, its ranges, and the unit dR enters in) could not be read to confirm it; the only
+version found was a third-party implementation, whose two branches use different units.
 """
 
 import math
 from enum import IntEnum
 
+import numpy as np
 from numba import njit
 
 from .registry import Key, Law, pack_in_order
 
+# Gauss-Legendre nodes and weights on [0, 1], for the elastic energy of Liu's law.
+_GL_X, _GL_W = np.polynomial.legendre.leggauss(12)
+_GL_X = 0.5 * (_GL_X + 1.0)
+_GL_W = 0.5 * _GL_W
+
+
+# ----------------------------------------------------------------------- elastic laws
+
 
 @njit(cache=True)
 def hertz(delta: float, k: float, n: float) -> float:
-    """Undamped Hertz force K delta^n [N] (zero without penetration).
+    """Power-law force K delta^n [N] (zero without penetration).
 
     References
     ----------
@@ -50,108 +79,245 @@ def hertz(delta: float, k: float, n: float) -> float:
 
 
 @njit(cache=True)
-def _damped(delta, delta_dot, delta_dot_minus, k, n, chi):
-    """K delta^n (1 + chi delta_dot / delta_dot_minus), clamped at zero [N]."""
-    elastic = hertz(delta, k, n)
-    if elastic == 0.0 or delta_dot_minus <= 0.0:
-        return elastic
+def johnson_switch(e_star: float, d_r: float) -> tuple[float, float]:
+    """(f_s [N/m], delta_s [m]) where Johnson's law hands over to its tangent line.
+
+    f_s = 4 pi E* dR e^-3, delta_s = 8 dR e^-3 (about 0.40 dR): there the law's stiffness
+    is pi E* L. See ``johnson``.
+    """
+    f_s = 4.0 * math.pi * e_star * d_r * math.exp(-3.0)
+    return f_s, 8.0 * d_r * math.exp(-3.0)
+
+
+@njit(cache=True)
+def johnson_penetration(f: float, e_star: float, d_r: float) -> float:
+    """Penetration [m] of Johnson's law under force per width f [N/m], for 0 < f <= f_s."""
+    return f / (math.pi * e_star) * (math.log(4.0 * math.pi * e_star * d_r / f) - 1.0)
+
+
+@njit(cache=True)
+def johnson_load(delta: float, e_star: float, d_r: float) -> float:
+    """Force per unit width f [N/m] of Johnson's conformal law at penetration delta [m].
+
+    Solves delta = f / (pi E*) [ln(4 pi E* dR / f) - 1] for f by Newton's method in
+    x = ln f, safeguarded by bisection. With a = ln(4 pi E* dR), G(x) = e^x (a - x - 1)
+    - pi E* delta rises and is convex for x <= a - 3 (f <= f_s), so Newton's iterates from
+    a start above the root fall monotonically onto it; the start is the root of the
+    equation with f replaced by pi E* delta inside the logarithm, which lies above it.
+    Beyond delta_s (``johnson_switch``) the load follows the tangent line there.
+    """
+    if delta <= 0.0:
+        return 0.0
+    f_s, delta_s = johnson_switch(e_star, d_r)
+    if delta >= delta_s:
+        return f_s + math.pi * e_star * (delta - delta_s)
+    a = math.log(4.0 * math.pi * e_star * d_r)
+    target = math.pi * e_star * delta
+    hi = a - 3.0  # G(hi) >= 0 here, since delta < delta_s
+    lo = -np.inf
+    x = min(hi, math.log(target / max(math.log(4.0 * d_r / delta) - 1.0, 2.0)))
+    for _ in range(100):
+        g = math.exp(x) * (a - x - 1.0) - target
+        if g > 0.0:
+            hi = x
+        else:
+            lo = x
+        step = g / (math.exp(x) * (a - x - 2.0))
+        x_new = x - step
+        if not lo < x_new < hi:  # Newton left the bracket: bisect (lo may be -inf)
+            x_new = 0.5 * (lo + hi) if lo > -np.inf else hi - 2.0 * (hi - x + 1.0)
+        if abs(x_new - x) <= 1e-15 * max(1.0, abs(x)):
+            return math.exp(x_new)
+        x = x_new
+    return math.exp(x)
+
+
+@njit(cache=True)
+def johnson(delta: float, e_star: float, d_r: float, width: float) -> float:
+    """Johnson's force [N] of a cylinder in a conforming cylindrical seat.
+
+    delta = f / (pi E*) [ln(4 pi E* dR / f) - 1], f = F / L, dR = R_B - R_J (Johnson 1985,
+    sec. 5.3, as used by Pereira et al. 2011). Checked: the same form, per unit width, in
+    an independent open implementation (ladisk/DyS, contact_model_cylinder.py); the
+    papers' own text was not readable, so E* is taken as defined above.
+
+    delta(f) rises only up to f_max = 4 pi E* dR e^-2, delta_max = 4 dR e^-2 (about
+    0.54 dR), where its stiffness becomes infinite; past it the law has no solution. So
+    from delta_s = 8 dR e^-3 (about 0.40 dR, where f = f_max / e and the stiffness is
+    pi E* L) the force continues along its tangent, F = L f_s + pi E* L (delta - delta_s):
+    continuous with its slope, and reported as outside the law's range.
+    """
+    return width * johnson_load(delta, e_star, d_r)
+
+
+@njit(cache=True)
+def liu(delta: float, e_star: float, d_r: float, width: float) -> float:
+    """Liu et al.'s force [N] of a cylinder in a conforming cylindrical seat.
+
+    F = (pi / 2) E* L delta sqrt(delta / (2 (dR + delta))) (Liu, Zhang and Yang 2007, from
+    finite-element fits). Checked: the same form in an independent open implementation
+    (ladisk/DyS); the paper's own definition of E* could not be read, and is taken as
+    above (for equal materials E / (2 (1 - nu^2)), the usual one). Small delta: Hertz-like,
+    F ~ delta^1.5; large delta: linear.
+    """
+    if delta <= 0.0:
+        return 0.0
+    return 0.5 * math.pi * e_star * width * delta * math.sqrt(delta / (2.0 * (d_r + delta)))
+
+
+@njit(cache=True)
+def foundation_on_circles(delta: float, k: float, d_r: float, width: float) -> float:
+    """Elastic-foundation force [N] of an unworn journal in an unworn bearing.
+
+    A Winkler layer, p = (K_f / h) u, u the radial interference. In the small-clearance
+    geometry the gap at angle a from the line of centres is dR - e cos a (e = dR + delta), so
+    F = (K_f / h) R L int_{-a0}^{a0} (e cos a - dR) cos a da = k L e (a0 - sin a0 cos a0),
+    cos a0 = dR / e, k = (K_f / h) R [Pa]. Small delta: F ~ (4 sqrt(2) / 3) k L
+    delta^1.5 / sqrt(dR). References: Johnson (1985), sec. 5.3 (elastic foundation);
+    Mukras et al., J. Tribol. 132 (2010) 031604.
+    """
+    if delta <= 0.0:
+        return 0.0
+    e = d_r + delta
+    x = 2.0 * math.acos(d_r / e)  # a0 - sin a0 cos a0 = (x - sin x) / 2
+    if x < 0.1:  # the series, free of the cancellation (next term x^11 / 4e7: 1e-18 x^3)
+        x2 = x * x
+        shape = x * x2 / 6.0 * (1.0 - x2 / 20.0 * (1.0 - x2 / 42.0 * (1.0 - x2 / 72.0)))
+    else:
+        shape = x - math.sin(x)
+    return k * width * e * 0.5 * shape
+
+
+@njit(cache=True)
+def elastic_force(
+    law: int, delta: float, k: float, n: float, e_star: float, d_r: float, width: float
+) -> float:
+    """Elastic force [N] by the law with code ``law`` (``NORMAL_LAWS``).
+
+    HERTZ is the power law K delta^n; ELASTIC_FOUNDATION is its closed form on unworn
+    circles with k = (K_f / h) R [Pa] (the joint integrates the worn surfaces itself).
+    """
+    if law == ElasticLaw.JOHNSON:
+        return johnson(delta, e_star, d_r, width)
+    if law == ElasticLaw.LIU:
+        return liu(delta, e_star, d_r, width)
+    if law == ElasticLaw.ELASTIC_FOUNDATION:
+        return foundation_on_circles(delta, k, d_r, width)
+    return hertz(delta, k, n)
+
+
+@njit(cache=True)
+def elastic_stiffness(
+    law: int, delta: float, k: float, n: float, e_star: float, d_r: float, width: float
+) -> float:
+    """Contact stiffness dF/d(delta) [N/m] of the elastic law ``law`` at delta [m]."""
+    if delta <= 0.0:
+        return 0.0
+    if law == ElasticLaw.JOHNSON:
+        f = johnson_load(delta, e_star, d_r)
+        f_s, _ = johnson_switch(e_star, d_r)
+        if f >= f_s:
+            return math.pi * e_star * width
+        return math.pi * e_star * width / (math.log(4.0 * math.pi * e_star * d_r / f) - 2.0)
+    if law == ElasticLaw.LIU:
+        c = 0.5 * math.pi * e_star * width / math.sqrt(2.0)
+        return c * math.sqrt(delta) * (1.5 * d_r + delta) / (d_r + delta) ** 1.5
+    if law == ElasticLaw.ELASTIC_FOUNDATION:
+        e = d_r + delta
+        a = math.acos(d_r / e)
+        return k * width * (a + math.sin(a) * math.cos(a))
+    return k * n * delta ** (n - 1.0)
+
+
+@njit(cache=True)
+def elastic_energy(
+    law: int, delta: float, k: float, n: float, e_star: float, d_r: float, width: float
+) -> float:
+    """Elastic energy [J] stored at penetration delta [m], the integral of the force."""
+    if delta <= 0.0:
+        return 0.0
+    if law == ElasticLaw.JOHNSON:
+        f_s, delta_s = johnson_switch(e_star, d_r)
+        f = min(johnson_load(delta, e_star, d_r), f_s)  # U(f) = L f^2 / (2 pi E*) [ln - 3/2]
+        u = (
+            width
+            * f
+            * f
+            / (2.0 * math.pi * e_star)
+            * (math.log(4.0 * math.pi * e_star * d_r / f) - 1.5)
+        )
+        over = max(0.0, delta - delta_s)
+        return u + width * (f_s * over + 0.5 * math.pi * e_star * over * over)
+    if law == ElasticLaw.HERTZ:
+        return k * delta ** (n + 1.0) / (n + 1.0)
+    energy = 0.0  # s = delta t^2: the integrand 2 delta t F(delta t^2) is smooth in t
+    for i in range(_GL_X.shape[0]):
+        t = _GL_X[i]
+        energy += (
+            _GL_W[i] * 2.0 * delta * t * elastic_force(law, delta * t * t, k, n, e_star, d_r, width)
+        )
+    return energy
+
+
+# ----------------------------------------------------------------------- damping laws
+
+
+@njit(cache=True)
+def lankarani_nikravesh(c_e: float) -> float:
+    """Hysteresis factor chi = 3 (1 - c_e^2) / 4 of Lankarani and Nikravesh (1990) [-].
+
+    F = f_e [1 + 3 (1 - c_e^2) / 4 * delta_dot / delta_dot_minus] (Flores 2009, Eq. 18).
+    Derived for c_e close to 1: the restitution it produces exceeds c_e by about
+    1.5 (1 - c_e)^2.
+    """
+    return 0.75 * (1.0 - c_e * c_e)
+
+
+@njit(cache=True)
+def hunt_crossley(c_e: float) -> float:
+    """Hysteresis factor chi = 3 (1 - c_e) / 2 of Hunt and Crossley (1975) [-].
+
+    Their relation c_e = 1 - 2/3 lambda delta_dot_minus solved for the damping per unit
+    elastic force lambda [s/m], the form common in multibody codes; the restitution it
+    produces exceeds c_e by about (1 - c_e)^2.
+    """
+    return 1.5 * (1.0 - c_e)
+
+
+@njit(cache=True)
+def flores2011(c_e: float) -> float:
+    """Hysteresis factor chi = 8 (1 - c_e) / (5 c_e) of Flores et al. (2011) [-].
+
+    Meant for any c_e in (0, 1]; near c_e = 1 the restitution it produces falls short of c_e
+    by about (1 - c_e) / 15.
+    """
+    return 1.6 * (1.0 - c_e) / c_e
+
+
+@njit(cache=True)
+def hysteresis_factor(damping: int, c_e: float) -> float:
+    """Hysteresis factor chi [-] of the damping law ``damping`` (``DAMPING_LAWS``), 0: NONE."""
+    if damping == Damping.LANKARANI_NIKRAVESH:
+        return lankarani_nikravesh(c_e)
+    if damping == Damping.HUNT_CROSSLEY:
+        return hunt_crossley(c_e)
+    if damping == Damping.FLORES2011:
+        return flores2011(c_e)
+    return 0.0
+
+
+@njit(cache=True)
+def damped(
+    elastic: float, delta_dot: float, delta_dot_minus: float, damping: int, c_e: float
+) -> float:
+    """Normal force [N]: elastic (1 + chi delta_dot / delta_dot_minus), clamped at zero."""
+    if elastic <= 0.0 or delta_dot_minus <= 0.0:
+        return max(elastic, 0.0)
+    chi = hysteresis_factor(damping, c_e)
     return max(0.0, elastic * (1.0 + chi * delta_dot / delta_dot_minus))
 
 
-@njit(cache=True)
-def lankarani_nikravesh(
-    delta: float, delta_dot: float, delta_dot_minus: float, k: float, n: float, c_e: float
-) -> float:
-    """Hertz force with Lankarani-Nikravesh hysteresis damping [N].
-
-    F = K delta^n [1 + 3 (1 - c_e^2) / 4 * delta_dot / delta_dot_minus], F >= 0. Derived
-    for c_e close to 1: the restitution it produces exceeds c_e by about 1.5 (1 - c_e)^2.
-
-    References
-    ----------
-    Lankarani and Nikravesh (1990); Flores (2009), Eq. 18.
-    """
-    return _damped(delta, delta_dot, delta_dot_minus, k, n, 0.75 * (1.0 - c_e * c_e))
-
-
-@njit(cache=True)
-def hunt_crossley(
-    delta: float, delta_dot: float, delta_dot_minus: float, k: float, n: float, c_e: float
-) -> float:
-    """Hertz force with Hunt-Crossley damping, chi = 3 (1 - c_e) / 2 [N].
-
-    F = K delta^n [1 + 3 (1 - c_e) / 2 * delta_dot / delta_dot_minus], F >= 0. This is
-    Hunt and Crossley's relation c_e = 1 - 2/3 lambda delta_dot_minus solved for their
-    damping per unit elastic force lambda [s/m], the form common in multibody codes; the
-    restitution it produces exceeds c_e by about (1 - c_e)^2.
-
-    References
-    ----------
-    Hunt and Crossley (1975).
-    """
-    return _damped(delta, delta_dot, delta_dot_minus, k, n, 1.5 * (1.0 - c_e))
-
-
-@njit(cache=True)
-def flores2011(
-    delta: float, delta_dot: float, delta_dot_minus: float, k: float, n: float, c_e: float
-) -> float:
-    """Hertz force with the damping of Flores et al. (2011), chi = 8 (1 - c_e) / (5 c_e) [N].
-
-    F = K delta^n [1 + 8 (1 - c_e) / (5 c_e) * delta_dot / delta_dot_minus], F >= 0. Meant
-    for any c_e in (0, 1]; near c_e = 1 the restitution it produces falls short of c_e
-    by about (1 - c_e) / 15.
-
-    References
-    ----------
-    Flores, Machado, Silva and Martins (2011).
-    """
-    return _damped(delta, delta_dot, delta_dot_minus, k, n, 1.6 * (1.0 - c_e) / c_e)
-
-
-RESTITUTION = Key(
-    "restitution_coefficient", "", None, positive=True, high=1.0,
-    help="coefficient of restitution c_e, 0 < c_e <= 1",
-)  # fmt: skip
-NORMAL_LAWS = (
-    Law(
-        "hertz", 0, (), lambda values: (1.0,),
-        "K delta^n, no damping (Flores 2009, Eq. 18, D = 0)",
-    ),
-    Law(
-        "lankarani_nikravesh", 1, (RESTITUTION,), pack_in_order(RESTITUTION),
-        "K delta^n [1 + 3 (1 - c_e^2)/4 delta_dot/delta_dot_minus] (Lankarani, Nikravesh 1990)",
-    ),
-    Law(
-        "hunt_crossley", 2, (RESTITUTION,), pack_in_order(RESTITUTION),
-        "K delta^n [1 + 3 (1 - c_e)/2 delta_dot/delta_dot_minus] (Hunt, Crossley 1975)",
-    ),
-    Law(
-        "flores2011", 3, (RESTITUTION,), pack_in_order(RESTITUTION),
-        "K delta^n [1 + 8 (1 - c_e)/(5 c_e) delta_dot/delta_dot_minus] (Flores et al. 2011)",
-    ),
-)  # fmt: skip
-NormalLaw = IntEnum("NormalLaw", {law.name.upper(): law.code for law in NORMAL_LAWS})
-
-
-@njit(cache=True)
-def normal_force(
-    law: int,
-    delta: float,
-    delta_dot: float,
-    delta_dot_minus: float,
-    k: float,
-    n: float,
-    c_e: float,
-) -> float:
-    """Normal force [N] by the law with code ``law`` (``NORMAL_LAWS``); c_e packed by it."""
-    if law == NormalLaw.LANKARANI_NIKRAVESH:
-        return lankarani_nikravesh(delta, delta_dot, delta_dot_minus, k, n, c_e)
-    if law == NormalLaw.HUNT_CROSSLEY:
-        return hunt_crossley(delta, delta_dot, delta_dot_minus, k, n, c_e)
-    if law == NormalLaw.FLORES2011:
-        return flores2011(delta, delta_dot, delta_dot_minus, k, n, c_e)
-    return hertz(delta, k, n)
+# ----------------------------------------------------------------------- stiffness formulas
 
 
 @njit(cache=True)
@@ -183,3 +349,53 @@ def internal_cylinder_stiffness(
     """
     e_star = effective_modulus(e_b, nu_b, e_j, nu_j)
     return 4.0 / 3.0 * e_star * math.sqrt(effective_radius(r_b, r_j))
+
+
+def foundation_modulus(e: float, nu: float) -> float:
+    """K_f = (1 - nu) E / ((1 + nu)(1 - 2 nu)) [Pa] of a Winkler layer (Johnson 1985, 5.3)."""
+    return (1.0 - nu) * e / ((1.0 + nu) * (1.0 - 2.0 * nu))
+
+
+# ----------------------------------------------------------------------- the registries
+
+LAYER = Key(
+    "foundation_thickness", "m", None, positive=True,
+    help="thickness h of the elastic layer, e.g. '2 mm'",
+)  # fmt: skip
+NORMAL_LAWS = (
+    Law("hertz", 0, (), lambda values: (), "K delta^n (Flores 2009, Eq. 18)"),
+    Law(
+        "johnson", 1, (), lambda values: (),
+        "delta = F/(pi E* L) [ln(4 pi E* L dR / F) - 1] (Johnson 1985; Pereira et al. 2011)",
+    ),
+    Law(
+        "liu", 2, (), lambda values: (),
+        "(pi/2) E* L delta sqrt(delta / (2 (dR + delta))) (Liu, Zhang, Yang 2007)",
+    ),
+    Law(
+        "elastic_foundation", 3, (LAYER,), pack_in_order(LAYER),
+        "Winkler layer p = K_f u / h on the worn surfaces (Johnson 1985; Mukras et al. 2010)",
+    ),
+)  # fmt: skip
+ElasticLaw = IntEnum("ElasticLaw", {law.name.upper(): law.code for law in NORMAL_LAWS})
+
+RESTITUTION = Key(
+    "restitution_coefficient", "", None, positive=True, high=1.0,
+    help="coefficient of restitution c_e, 0 < c_e <= 1",
+)  # fmt: skip
+DAMPING_LAWS = (
+    Law("none", 0, (), lambda values: (1.0,), "no damping: elastic contact"),
+    Law(
+        "lankarani_nikravesh", 1, (RESTITUTION,), pack_in_order(RESTITUTION),
+        "f_e [1 + 3 (1 - c_e^2)/4 delta_dot/delta_dot_minus] (Lankarani, Nikravesh 1990)",
+    ),
+    Law(
+        "hunt_crossley", 2, (RESTITUTION,), pack_in_order(RESTITUTION),
+        "f_e [1 + 3 (1 - c_e)/2 delta_dot/delta_dot_minus] (Hunt, Crossley 1975)",
+    ),
+    Law(
+        "flores2011", 3, (RESTITUTION,), pack_in_order(RESTITUTION),
+        "f_e [1 + 8 (1 - c_e)/(5 c_e) delta_dot/delta_dot_minus] (Flores et al. 2011)",
+    ),
+)  # fmt: skip
+Damping = IntEnum("Damping", {law.name.upper(): law.code for law in DAMPING_LAWS})

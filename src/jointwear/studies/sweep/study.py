@@ -309,18 +309,28 @@ def _table(
 def headline(summary: Mapping) -> dict[str, float]:
     """The numbers of a run's summary as flat columns.
 
-    Per clearance joint ``<joint>.<key>`` (``coupler_follower.max_wear_depth_journal_m``),
-    the run statistics by their own names (``accepted_steps``), and any other number at the
-    top of the summary (e.g. of a long-life run). A missing value (None) becomes NaN.
+    Per clearance joint ``<joint>.<key>`` (``coupler_follower.max_wear_depth_journal_m``;
+    nested tables by dotted keys), the run statistics by their own names
+    (``accepted_steps``), and any other number at the top of the summary (e.g. of a
+    long-life run). A missing value (None) becomes NaN.
     """
     columns: dict[str, float] = {}
     for joint, values in summary.get("clearance_joints", {}).items():
-        for key, value in values.items():
-            if value is None or _is_number(value):
-                columns[f"{joint}.{key}"] = math.nan if value is None else value
+        columns.update(_flat(values, joint))
     for key, value in [*summary.get("stats", {}).items(), *summary.items()]:
         if _is_number(value):
             columns[key] = value
+    return columns
+
+
+def _flat(values: Mapping, prefix: str) -> dict[str, float]:
+    """The numbers of a nested table as ``prefix.key[.key...]`` columns; None becomes NaN."""
+    columns: dict[str, float] = {}
+    for key, value in values.items():
+        if isinstance(value, Mapping):
+            columns.update(_flat(value, f"{prefix}.{key}"))
+        elif value is None or _is_number(value):
+            columns[f"{prefix}.{key}"] = math.nan if value is None else value
     return columns
 
 
