@@ -70,6 +70,8 @@ def run(
     )
     for name, joint in results.summary.get("clearance_joints", {}).items():
         out.print(_joint_line(name, joint), soft_wrap=True, highlight=False)
+        for line in _range_warnings(name, joint):
+            err.print(line, soft_wrap=True, highlight=False, markup=False)
     out.print(f"results in {out_dir}", soft_wrap=True)
     comparison = results.summary.get("ideal_comparison", {"status": SUCCESS})
     if comparison["status"] != SUCCESS:
@@ -81,6 +83,24 @@ def run(
         raise typer.Exit(code=1)
     if results.status != SUCCESS:
         raise typer.Exit(code=1)
+
+
+RANGE_WORDS = {  # outside_law_ranges entry: what exceeded its limit
+    "penetration_over_clearance": "penetration / clearance",
+    "hertz_half_width_over_journal_radius": "Hertz half-width / journal radius",
+    "eccentricity_ratio": "eccentricity ratio (film model)",
+}
+
+
+def _range_warnings(name: str, joint: dict) -> list[str]:
+    """One warning per law assumption the joint's run went beyond (summary.json has them)."""
+    return [
+        f"warning: joint '{name}': {RANGE_WORDS[check]} reached {entry['largest']:.3g}, beyond "
+        f"the law's range {entry['limit']:.3g} for {100 * entry['time_fraction_beyond']:.3g} % "
+        "of the time (summary.json: outside_law_ranges)"
+        for check, entry in joint.get("outside_law_ranges", {}).items()
+        if entry["time_beyond_s"] > 0.0
+    ]
 
 
 def _joint_line(name: str, joint: dict) -> str:
