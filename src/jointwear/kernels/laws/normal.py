@@ -23,7 +23,7 @@ The damping laws were derived for Hertz's K delta^n, but to first order in (1 - 
 they dissipate in an impact does not depend on the elastic law: with x = delta_dot /
 delta_dot_minus ~ sqrt(1 - U(delta) / U_max), U the elastic energy, the loop integral of
 chi f_e x d(delta) is (4/3) chi U_max for any f_e. So each damping law keeps its restitution
-with every elastic law below (tests/test_normal_laws.py measures it).
+with every elastic law below (tests/test_conformal_laws.py measures it).
 
 References
 ----------
