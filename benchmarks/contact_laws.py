@@ -2,9 +2,9 @@
 
 Writes the README's comparison table (max contact force, time in contact, deepest wear, the
 share of the time beyond the law's range) for the cases below, each the paper's four-bar
-(``examples/flores2009_fourbar.toml``) with overrides of its clearance joint, and the figure
-``docs/images/contact_laws.png``: force against penetration of every elastic law on the
-paper's joint (Table 2: R_B 10 mm, R_J 9.8 mm, L 20 mm, steel 207 GPa, 0.3).
+(``examples/flores2009_fourbar.toml``, or an example extending it) with its clearance joint
+changed, and the figure ``docs/images/contact_laws.png``: force against penetration of every
+elastic law on the paper's joint (Table 2: R_B 10 mm, R_J 9.8 mm, L 20 mm, steel 207 GPa, 0.3).
 
 Usage (from the repository root, after ``make install``)::
 
@@ -22,26 +22,28 @@ import numpy as np
 import jointwear as jw
 
 ROOT = Path(__file__).parents[1]
-FOURBAR = ROOT / "examples" / "flores2009_fourbar.toml"
+EXAMPLES = ROOT / "examples"
+FOURBAR = EXAMPLES / "flores2009_fourbar.toml"
 JOINT = "coupler_follower"
 KEY = f"joints.{JOINT}.clearance"
-# SAE 30 engine oil at 100 C: 9.3-12.5 mm^2/s kinematic (SAE J300), about 0.87 g/cm^3,
-# so 8-11 mPa s; 0.01 Pa s.
-OIL = "0.01 Pa*s"
 LAYER = "5 mm"  # elastic-foundation layer on the bearing (a bushing's wall), an assumption
-CASES = {
-    "Hertz (paper)": [],
-    "Johnson": [f"{KEY}.normal_law=johnson"],
-    "Liu et al.": [f"{KEY}.normal_law=liu"],
-    f"elastic foundation, h = {LAYER}": [
-        f"{KEY}.normal_law=elastic_foundation",
-        f"{KEY}.foundation_thickness={LAYER}",
-        f"{KEY}.wear_distribution=elastic_foundation",
-    ],
-    "Hertz, lubricated (SAE 30, short bearing)": [
-        f"{KEY}.lubrication=short_bearing",
-        f"{KEY}.viscosity={OIL}",
-    ],
+CASES = {  # name: (model file, overrides)
+    "Hertz (paper)": (FOURBAR, []),
+    "Johnson": (EXAMPLES / "flores2009_fourbar_johnson.toml", []),
+    "Liu et al.": (FOURBAR, [f"{KEY}.normal_law=liu"]),
+    f"elastic foundation, h = {LAYER}": (
+        FOURBAR,
+        [
+            f"{KEY}.normal_law=elastic_foundation",
+            f"{KEY}.foundation_thickness={LAYER}",
+            f"{KEY}.wear_distribution=elastic_foundation",
+        ],
+    ),
+    # SAE 30 at 100 C, 0.01 Pa s (the example file gives the source)
+    "Hertz, lubricated (SAE 30, short bearing)": (
+        EXAMPLES / "flores2009_fourbar_lubricated.toml",
+        [],
+    ),
 }
 
 
@@ -52,8 +54,8 @@ def table(t_end: float) -> str:
         "beyond the law's range (penetration / patch) |",
         "|---|---|---|---|---|",
     ]
-    for name, overrides in CASES.items():
-        model = jw.load_model(FOURBAR, [f"solver.t_end={t_end}", *overrides])
+    for name, (path, overrides) in CASES.items():
+        model = jw.load_model(path, [f"solver.t_end={t_end}", *overrides])
         joint = jw.simulate(model).summary["clearance_joints"][JOINT]
         ranges = joint["outside_law_ranges"]
         beyond = [

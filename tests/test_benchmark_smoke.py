@@ -41,3 +41,17 @@ def test_studies_benchmark_runs_on_short_cases(tmp_path):
     life = report["life"]
     assert (life["status"], life["cycles_reached"]) == ("success", 6)
     assert life["simulated_cycles"] <= 6 and life["max_wear_depth_journal_m"] > 0
+
+
+def test_contact_laws_benchmark_prints_its_table():
+    args = ["--t-end", "0.01", "--no-figure"]
+    done = subprocess.run(
+        [sys.executable, str(BENCH.with_name("contact_laws.py")), *args],
+        capture_output=True, text=True, timeout=600,
+    )  # fmt: skip
+    assert done.returncode == 0, done.stderr
+    rows = [line for line in done.stdout.splitlines() if line.startswith("| ")][1:]
+    names = [row.split(" | ")[0].removeprefix("| ") for row in rows]
+    assert names == ["Hertz (paper)", "Johnson", "Liu et al.", "elastic foundation, h = 5 mm",
+                     "Hertz, lubricated (SAE 30, short bearing)"]  # fmt: skip
+    assert all(" kN | " in row and " µm | " in row for row in rows)

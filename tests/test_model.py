@@ -5,6 +5,7 @@ import copy
 import json
 import math
 import pickle
+from pathlib import Path
 
 import pytest
 from hypothesis import given, settings
@@ -373,6 +374,78 @@ def test_bad_override_path(override, line):
 def test_new_key_from_override_is_judged_by_the_schema():
     data = apply_overrides(pendulum(), ["solver.t_edn=2"])
     assert problems(data)[0].startswith("solver: unknown key 't_edn'")
+
+
+# Files that extend another -------------------------------------------------------------------
+
+EXAMPLES = Path(__file__).parents[1] / "examples"
+
+
+@pytest.mark.parametrize(
+    ("example", "overrides"),
+    [
+        ("flores2009_fourbar_johnson", ["normal_law=johnson"]),
+        ("flores2009_fourbar_lubricated", ["lubrication=short_bearing", "viscosity=0.01"]),
+    ],
+)
+def test_extending_example_is_its_base_with_the_changes(example, overrides):
+    key = "joints.coupler_follower.clearance."
+    expected = load_model(EXAMPLES / "flores2009_fourbar.toml", [key + o for o in overrides])
+    got = load_model(EXAMPLES / f"{example}.toml")
+    assert got.name == example
+    assert got.description != expected.description
+    assert got.model_dump(exclude={"name", "description"}) == expected.model_dump(
+        exclude={"name", "description"}
+    )
+
+
+def write(path, text: str):
+    path.write_text(text)
+    return path
+
+
+def test_extends_chains_and_takes_the_name_from_the_file(tmp_path):
+    write(tmp_path / "base.toml", PENDULUM_TOML)
+    write(tmp_path / "heavy.toml", 'extends = "base.toml"\n[set.bodies.rod]\nmass = "3 kg"\n')
+    sub = tmp_path / "sub"
+    sub.mkdir()
+    write(sub / "short.toml", 'extends = "../heavy.toml"\n[set.solver]\nt_end = 0.25\n')
+    model = load_model(sub / "short.toml", ["bodies.rod.inertia=0.1"])
+    assert model.name == "short"
+    assert model.body("rod").mass == 3.0
+    assert model.body("rod").inertia == 0.1  # --set applies after the file's own changes
+    assert model.solver.t_end == 0.25
+
+
+@pytest.mark.parametrize(
+    ("files", "line"),
+    [
+        (
+            {"a.toml": 'extends = "b.toml"', "b.toml": 'extends = "a.toml"'},
+            "a.toml: extends 'b.toml': ",  # ... b.toml: extends: the files extend each other
+        ),
+        ({"a.toml": 'extends = "a.toml"'}, "a.toml: extends: the files extend each other"),
+        ({"a.toml": 'extends = "missing.toml"'}, "a.toml: extends 'missing.toml': "),
+        ({"a.toml": "extends = 3"}, "a.toml: extends: expected the path of a model file"),
+        (
+            {"a.toml": 'extends = "base.toml"\n[solver]\nt_end = 1.0'},
+            "a.toml: solver: a file that extends another may only give extends, set, name",
+        ),
+        ({"a.toml": '[set.solver]\nt_end = 1.0'}, "a.toml: set: only a file with 'extends'"),
+        (
+            {"a.toml": 'extends = "base.toml"\n[set.bodies.rdo]\nmass = 2.0'},
+            "bodies.rdo: no item 'rdo'; names are rod",
+        ),
+    ],
+)
+def test_bad_extending_file(tmp_path, files, line):
+    write(tmp_path / "base.toml", PENDULUM_TOML)
+    for name, text in files.items():
+        write(tmp_path / name, text)
+    with pytest.raises(ModelError) as caught:
+        load_model(tmp_path / "a.toml")
+    (problem,) = caught.value.problems
+    assert problem.removeprefix(f"{tmp_path}/").startswith(line), problem
 
 
 # Fuzz ---------------------------------------------------------------------------------------

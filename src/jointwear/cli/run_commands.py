@@ -189,9 +189,9 @@ def _clearance_table(name: str, clearance: Clearance) -> Table:
         law = laws[getattr(clearance, law_key)]
         rows.append((f"{family} law", law.name, ""))
         rows += [(f"  {key.name}", getattr(clearance, key.name), key.unit) for key in law.keys]
+        if law.name == "archard":
+            rows.append(("  Archard k (as used)", clearance.archard_coefficient, "1/Pa"))
         summaries.append(f"{law.name}: {law.summary}")
-    if clearance.wear_law == "archard":
-        rows.append(("  Archard k (as used)", clearance.archard_coefficient, "1/Pa"))
     table.caption = "\n".join(summaries)
     rows.append((f"sectors per surface ({clearance.wear_distribution})", clearance.sectors, ""))
     for quantity, value, unit in rows:

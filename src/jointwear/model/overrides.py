@@ -18,12 +18,20 @@ def apply_overrides(data: dict, overrides: Iterable[str]) -> dict:
     ModelError
         If an override is malformed or its path runs through a missing array item or a value.
     """
-    data = copy.deepcopy(data)
+    changes = []
     for override in overrides:
         dotted, equals, text = override.partition("=")
-        keys = dotted.strip().split(".")
-        if not equals or not all(keys):
+        if not equals or not all(dotted.strip().split(".")):
             raise ModelError([f"--set {override}: expected path=value, e.g. solver.t_end=0.5"])
+        changes.append((dotted.strip(), _toml_value(text)))
+    return apply_changes(data, changes)
+
+
+def apply_changes(data: dict, changes: Iterable[tuple[str, object]]) -> dict:
+    """Return a copy of `data` with each ``(dotted.path, value)`` set, as ``apply_overrides``."""
+    data = copy.deepcopy(data)
+    for dotted, value in changes:
+        keys = dotted.split(".")
         container = data
         for depth, key in enumerate(keys[:-1]):
             where = ".".join(keys[: depth + 1])
@@ -31,7 +39,7 @@ def apply_overrides(data: dict, overrides: Iterable[str]) -> dict:
                 container = container.setdefault(key, {})
             else:
                 container = container[_index(container, key, where)]
-        _assign(container, keys[-1], _toml_value(text), dotted.strip())
+        _assign(container, keys[-1], value, dotted)
     return data
 
 

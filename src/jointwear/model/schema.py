@@ -4,8 +4,6 @@ A validated :class:`Model` holds plain SI floats (tuples for vectors) and names;
 user-input problem is reported as a :class:`ModelError` with one line per problem.
 """
 
-import re
-import tomllib
 from collections.abc import Sequence
 from os import PathLike
 from pathlib import Path
@@ -14,6 +12,7 @@ from typing import Annotated
 from pydantic import Field, ValidationError, model_validator
 
 from .errors import ModelError, from_validation_error
+from .files import read_model_data
 from .overrides import apply_overrides
 from .references import reference_problems
 from .sections import (
@@ -129,7 +128,8 @@ def parse_model(data: dict, name: str = "model") -> Model:
 def load_model(path: str | PathLike, overrides: Sequence[str] = ()) -> Model:
     """Read a TOML model file, apply dotted ``path=value`` overrides, and validate it.
 
-    The model name defaults to the file name without its suffix.
+    The model name defaults to the file name without its suffix. A file may extend another
+    (``model.files``).
 
     Raises
     ------
@@ -137,14 +137,5 @@ def load_model(path: str | PathLike, overrides: Sequence[str] = ()) -> Model:
         If the file cannot be read, is not valid TOML, or describes an invalid model.
     """
     path = Path(path)
-    try:
-        data = tomllib.loads(path.read_bytes().decode())
-    except OSError as error:
-        raise ModelError([f"{path}: cannot read the file; {error.strerror}"]) from None
-    except UnicodeDecodeError:
-        raise ModelError([f"{path}: not UTF-8 text; a model file is TOML"]) from None
-    except tomllib.TOMLDecodeError as error:
-        where = re.fullmatch(r"(.*) \(at line (\d+), column (\d+)\)", str(error))
-        place, what = (f"{path}:{where[2]}:{where[3]}", where[1]) if where else (path, error)
-        raise ModelError([f"{place}: invalid TOML: {what}; fix the syntax there"]) from None
+    data = read_model_data(path)
     return parse_model(apply_overrides(data, overrides), name=path.stem)

@@ -29,13 +29,14 @@ from numba import njit
 from ..kinematics import angular_velocity
 from ..laws.foundation import foundation_load, foundation_points, spread_foundation_wear
 from ..laws.friction import is_sliding, tangential_force
-from ..laws.lubrication import film_force_components, film_power_loss
+from ..laws.lubrication import film_force_components, film_power_loss, film_torques
 from ..laws.normal import ElasticLaw, damped, elastic_force
 from ..laws.normal import elastic_energy as law_energy
 from ..laws.wear import WearLaw, accumulate_wear, depth_at, hertz_line_contact, wear_coefficient
 from .journal_geometry import (
     apply_at_centres,
     apply_contact,
+    apply_torque,
     contact_velocities,
     eccentricity,
     surface_angles,
@@ -104,11 +105,13 @@ C_FILM_MIN = 13  # minimum film thickness c_local - e, 0 in solid contact [m]
 C_FILM_X = 14  # film force on the journal, global [N]
 C_FILM_Y = 15
 C_FILM_POWER = 16  # power dissipated in the film [W]
-N_CONTACT = 17
+C_FILM_TJ = 17  # film's shear torque on the journal [N m]
+C_FILM_TB = 18  # film's shear torque on the bearing [N m]
+N_CONTACT = 19
 OUTPUTS = (C_FX, C_FY, C_EX, C_EY, C_DELTA, C_FN, C_FT)  # time-series columns, in order
 OUTPUT_NAMES = ("fx", "fy", "ex", "ey", "delta", "fn", "ft")
-FILM_OUTPUTS = (C_EPS, C_FILM_MIN, C_FILM_X, C_FILM_Y, C_FILM_POWER)  # lubricated joints
-FILM_OUTPUT_NAMES = ("eps", "film_min", "film_fx", "film_fy", "film_power")
+FILM_OUTPUTS = (C_EPS, C_FILM_MIN, C_FILM_X, C_FILM_Y, C_FILM_TJ, C_FILM_POWER)  # lubricated
+FILM_OUTPUT_NAMES = ("eps", "film_min", "film_fx", "film_fy", "film_torque", "film_power")
 
 # Columns of JournalLog.totals.
 T_CONTACT_TIME = 0  # time with a positive normal force [s]
@@ -219,10 +222,7 @@ def evaluate(table, state, scratch, k, q, qd):
     out[C_EX] = ex
     out[C_EY] = ey
     e = math.hypot(ex, ey)
-    if e == 0.0:  # journal exactly centred: no direction, no contact
-        out[C_DELTA] = -p[P_C]
-        return
-    nx, ny = ex / e, ey / e
+    nx, ny = _line_of_centres(ex, ey, dex, dey)
     theta_b, theta_j = surface_angles(q, ib, ij, nx, ny)
     wear_b, wear_j = _profiles(law, state, k)
     gap = p[P_C] + _depth(theta_b, wear_b) + _depth(theta_j, wear_j)
@@ -243,8 +243,9 @@ def evaluate(table, state, scratch, k, q, qd):
     out[C_THETA_J] = theta_j
     if law[I_LUBRICATION]:
         w_j, w_b = angular_velocity(qd, ij), angular_velocity(qd, ib)
-        gamma_dot = (nx * dey - ny * dex) / e
-        _film(law, p, out, e, gap, delta, delta_dot, gamma_dot, w_j + w_b, w_j - w_b)
+        gamma_dot = (nx * dey - ny * dex) / e if e > 0.0 else 0.0
+        speeds = (delta_dot, gamma_dot, w_j + w_b, w_j - w_b)
+        _film(law, p, out, e, gap, delta, nx, ny, *speeds)
     if delta <= 0.0:
         return
     impact_speed = max(delta_dot, p[P_MIN_SPEED])  # until the loop records the onset
@@ -264,13 +265,29 @@ def evaluate(table, state, scratch, k, q, qd):
 
 
 @njit(cache=True, no_cpython_wrapper=True)
-def _film(law, p, out, e, gap, delta, delta_dot, gamma_dot, w, w_rel):
-    """Film force and power of a lubricated joint into out (C_EPS, C_FILM_*).
+def _line_of_centres(ex, ey, dex, dey):
+    """Unit vector from the bearing's centre to the journal's [-].
 
-    e, gap [m]: eccentricity and local clearance; w, w_rel [rad/s]: sum and difference of
-    the journal's and bearing's angular speeds. Up to the eccentricity ratio eps_b
-    (``P_BREAKDOWN``) the film carries the journal alone. Beyond it the film force is that
-    at eps_b with the current rates (the formulas grow without bound towards eps = 1), and
+    A journal exactly at the centre leaves along its velocity (e', [m/s]), or along +x at rest.
+    """
+    e = math.hypot(ex, ey)
+    if e > 0.0:
+        return ex / e, ey / e
+    speed = math.hypot(dex, dey)
+    if speed > 0.0:
+        return dex / speed, dey / speed
+    return 1.0, 0.0
+
+
+@njit(cache=True, no_cpython_wrapper=True)
+def _film(law, p, out, e, gap, delta, nx, ny, delta_dot, gamma_dot, w, w_rel):
+    """Film force, shear torques and power of a lubricated joint into out (C_EPS, C_FILM_*).
+
+    e, gap [m]: eccentricity and local clearance; (nx, ny): line of centres; delta_dot [m/s]:
+    its rate of approach; w, w_rel [rad/s]: sum and difference of the journal's and bearing's
+    angular speeds. Up to the eccentricity ratio eps_b (``P_BREAKDOWN``) the film carries the
+    journal alone. Beyond it the film is that at eps_b with the current rates (the formulas
+    grow without bound towards eps = 1), and
     once the surfaces touch it fades out as the penetration grows from 0 to (1 - eps_b) c,
     by the smooth step 1 - 3 x^2 + 2 x^3, while the solid contact takes over: the force is
     continuous throughout, and the surfaces wear only while they touch.
@@ -287,10 +304,12 @@ def _film(law, p, out, e, gap, delta, delta_dot, gamma_dot, w, w_rel):
     args = (min(e / gap, breakdown), delta_dot / gap, gamma_dot, w)
     fluid = (p[P_VISCOSITY], p[P_RJ], p[P_WIDTH], gap)
     f_r, f_t = film_force_components(law[I_LUBRICATION], *args, *fluid)
-    nx, ny = out[C_EX] / e, out[C_EY] / e
     out[C_FILM_X] = weight * (f_r * nx - f_t * ny)
     out[C_FILM_Y] = weight * (f_r * ny + f_t * nx)
     out[C_FILM_POWER] = weight * film_power_loss(law[I_LUBRICATION], *args, w_rel, *fluid)
+    t_journal, t_bearing = film_torques(law[I_LUBRICATION], *args, w_rel, *fluid)
+    out[C_FILM_TJ] = weight * t_journal
+    out[C_FILM_TB] = weight * t_bearing
 
 
 @njit(cache=True, no_cpython_wrapper=True)
@@ -300,11 +319,13 @@ def add_forces(table, state, scratch, q, qd, g):
         evaluate(table, state, scratch, k, q, qd)
         c = scratch.contact[k]
         p = table.params[k]
-        if c[C_FILM_X] != 0.0 or c[C_FILM_Y] != 0.0:
+        if table.ints[k, I_LUBRICATION]:
             apply_at_centres(
                 q, g, table.ints[k, I_BEARING], p[P_SB_X], p[P_SB_Y],
                 table.ints[k, I_JOURNAL], p[P_SJ_X], p[P_SJ_Y], c[C_FILM_X], c[C_FILM_Y],
             )  # fmt: skip
+            apply_torque(g, table.ints[k, I_JOURNAL], c[C_FILM_TJ])
+            apply_torque(g, table.ints[k, I_BEARING], c[C_FILM_TB])
         if c[C_FN] == 0.0 and c[C_FT] == 0.0:
             continue
         e = math.hypot(c[C_EX], c[C_EY])

@@ -82,6 +82,13 @@ def apply_at_centres(q, g, ib, sb_x, sb_y, ij, sj_x, sj_y, fx, fy):
 
 
 @njit(cache=True)
+def apply_torque(g, b, torque):
+    """Add a torque [N m] to body b (nothing for the ground, b < 0)."""
+    if b >= 0:
+        g[3 * b + 2] += torque
+
+
+@njit(cache=True)
 def _apply_at(q, g, b, s_x, s_y, off_x, off_y, fx, fy):
     """Force (fx, fy) at the point off from body point s (global offset) of body b."""
     if b < 0:

@@ -25,15 +25,25 @@ f_r = R int p cos theta and f_t = R int p sin theta over the film area (theta, z
 The pi-film. Both models keep the full Reynolds pressure on the half of the film where the
 wedge builds pressure, 0 < theta < pi for w - 2 gamma_dot >= 0 (the converging half in the
 direction of the mean surface motion), and set it to zero on the other half, as Flores et al.
-(2009) do after Pinkus and Sternlicht. The forces are then linear in (w - 2 gamma_dot) and
-eps_dot. For w - 2 gamma_dot < 0 we use the mirror image (0 < theta < pi -> pi < theta < 2 pi),
-which replaces w - 2 gamma_dot by its absolute value in f_r and flips the sign of the squeeze
-term of f_t; the published formulas, read literally there, would integrate the diverging half
-and pull the journal towards the wall. Where the squeeze dominates, the pi-film still holds
-sub-ambient pressure on part of its half, as in the source; a film cavitated wherever p < 0
-(Gumbel applied pointwise) is not what these formulas describe: for pure squeeze it gives
-f_t = 0, while the pi-film gives the 4 eps eps_dot term of f_t. At w - 2 gamma_dot = 0 with
-eps_dot != 0 this term therefore jumps sign (the pi-film changes side).
+(2009) do after Pinkus and Sternlicht. For w - 2 gamma_dot < 0 the wedge's half is the mirror
+image, pi < theta < 2 pi; the published formulas, read literally there, would integrate the
+diverging half and pull the journal towards the wall. The mirror replaces w - 2 gamma_dot by
+its absolute value in f_r and flips the sign of the squeeze term of f_t. That flip, taken as
+a sign, would make f_t jump wherever w - 2 gamma_dot crosses 0 while eps_dot != 0, and an
+orbiting journal that reaches gamma_dot = w / 2 sits on the jump (the integrator stalls).
+
+So the squeeze term of f_t carries a smooth sign instead (our regularisation): s = cos beta,
+beta = atan2(2 eps_dot, eps v), v = w - 2 gamma_dot. In the short bearing the pressure has the
+sign of eps v sin theta - 2 eps_dot cos theta, i.e. it is positive on beta < theta < beta + pi:
+beta measures how far the squeeze turns the loaded half away from the wedge's pi-film. Pure
+wedge (eps_dot = 0) gives s = +-1, the pi-film exactly, and the steady closed forms hold
+unchanged; where the wedge dominates s differs from +-1 only to second order in
+2 eps_dot / (eps v). Pure squeeze (v = 0) gives s = 0 and f_t = 0, as the symmetry of a
+journal moving straight at the wall demands, where the literal (0, pi) film would give the
+4 eps eps_dot term and push it sideways. f_t is then continuous wherever eps_dot or v is
+nonzero, and f_r (with |v|) everywhere. The long bearing uses the same s. A film cavitated
+wherever p < 0 (Gumbel applied pointwise) is not what these formulas describe: it also
+changes f_r.
 
 Checked signs (tests/test_lubrication.py): eps_dot > 0 gives f_r < 0 (the approaching
 journal is pushed back); with w > 0, gamma_dot = eps_dot = 0 the short-bearing force makes
@@ -64,9 +74,18 @@ dA, U = R w_rel. The Couette part over the whole circumference is 2 pi mu U^2 R 
 eps^2)) (Petroff's 2 pi mu U^2 R L / c at eps = 0). Multiplying the Reynolds equation by p and
 integrating by parts (p = 0 at z = +-L/2 for the short bearing, at the ends of the pi-film for
 the long one) turns the pressure part into c [eps (w - 2 gamma_dot) f_t / 2 - eps_dot f_r],
-exact for either model; no quadrature is needed (the tests check it against scipy quadrature
-of the defining integral). Pure squeeze gives -f_r c eps_dot, the power the journal does on
-the film.
+exact for either model's pi-film (s = +-1); no quadrature is needed (the tests check it
+against scipy quadrature of the defining integral). Pure squeeze gives -f_r c eps_dot, the
+power the journal does on the film. With |s| < 1 we keep the same expression; it stays a
+positive semi-definite quadratic form in (|v|, eps_dot) for every |s| <= 1 (the cross term is
+largest at s = +-1, where it is the integral of a square).
+
+Torques. The shear stress on each surface, mu (U_J - U_B) / h plus or minus (h / 2) dp/dx,
+gives the journal T_J = -T_c - e f_t / 2 and the bearing T_B = T_c - e f_t / 2, with the
+Couette torque T_c = 2 pi mu R^3 L w_rel / (c sqrt(1 - eps^2)) (the classic journal and
+bearing torques; Hamrock et al. 2004). With the film force at the two centres (a couple
+e f_t) the film's moments sum to zero, and the power the bodies lose to the film,
+-(f . de/dt + T_J omega_J + T_B omega_B), is exactly the Phi above, for every s.
 
 References
 ----------
@@ -117,6 +136,19 @@ class FilmModel(IntEnum):
 
 
 @njit(cache=True)
+def squeeze_side(eps: float, eps_dot: float, v: float) -> float:
+    """Smooth sign s = cos beta in [-1, 1] of the squeeze term of f_t [-].
+
+    beta = atan2(2 eps_dot, eps v): the positive short-bearing pressure lies on
+    beta < theta < beta + pi; v = w - 2 gamma_dot [rad/s]. s = +-1 for the pi-film and its
+    mirror (eps_dot = 0), 0 for pure squeeze (v = 0) (module docstring).
+    """
+    wedge = eps * v
+    size = math.hypot(wedge, 2.0 * eps_dot)
+    return wedge / size if size > 0.0 else 1.0
+
+
+@njit(cache=True)
 def short_bearing_forces(
     eps: float,
     eps_dot: float,
@@ -132,7 +164,7 @@ def short_bearing_forces(
     With A = mu R L^3 / (2 c^2) and v = w - 2 gamma_dot:
     f_r = -A [2 eps^2 |v| / (1 - eps^2)^2 + pi (1 + 2 eps^2) eps_dot / (1 - eps^2)^(5/2)],
     f_t = A [pi eps v / (2 (1 - eps^2)^(3/2)) + s 4 eps eps_dot / (1 - eps^2)^2],
-    s = 1 for v >= 0, else -1 (mirrored pi-film, module docstring); 0 <= eps < 1.
+    s = ``squeeze_side(eps, eps_dot, v)`` (module docstring); 0 <= eps < 1.
 
     References
     ----------
@@ -140,7 +172,7 @@ def short_bearing_forces(
     """
     a = mu * r * width**3 / (2.0 * c * c)
     v = w - 2.0 * gamma_dot
-    side = 1.0 if v >= 0.0 else -1.0
+    side = squeeze_side(eps, eps_dot, v)
     q = 1.0 - eps * eps
     f_r = -a * (
         2.0 * eps * eps * abs(v) / (q * q) + math.pi * (1.0 + 2.0 * eps * eps) * eps_dot / q**2.5
@@ -162,10 +194,11 @@ def long_bearing_forces(
 ) -> tuple[float, float]:
     """Film force (f_r, f_t) [N] on the journal of a long bearing, pi-film (p = 0 at its ends).
 
-    With B = 6 mu L R^3 / c^2, v = w - 2 gamma_dot and s = 1 for v >= 0, else -1:
+    With B = 6 mu L R^3 / c^2 and v = w - 2 gamma_dot:
     f_r = -B [2 eps^2 |v| / ((2 + eps^2)(1 - eps^2))
               + 2 eps_dot (pi/2 - 8 / (pi (2 + eps^2))) / (1 - eps^2)^(3/2)],
     f_t = B [pi eps v / ((2 + eps^2) sqrt(1 - eps^2)) + s 4 eps eps_dot / ((2 + eps^2)(1 - eps^2))],
+    s = ``squeeze_side(eps, eps_dot, v)``,
     derived from the long-bearing Reynolds equation (module docstring); 0 <= eps < 1.
 
     References
@@ -174,7 +207,7 @@ def long_bearing_forces(
     """
     b = 6.0 * mu * width * r**3 / (c * c)
     v = w - 2.0 * gamma_dot
-    side = 1.0 if v >= 0.0 else -1.0
+    side = squeeze_side(eps, eps_dot, v)
     q = 1.0 - eps * eps
     s = 2.0 + eps * eps
     f_r = -b * (
@@ -252,3 +285,27 @@ def film_power_loss(
     couette = 2.0 * math.pi * mu * u * u * r * width / (c * math.sqrt(1.0 - eps * eps))
     pressure = c * (0.5 * eps * (w - 2.0 * gamma_dot) * f_t - eps_dot * f_r)
     return couette + pressure
+
+
+@njit(cache=True)
+def film_torques(
+    model: int,
+    eps: float,
+    eps_dot: float,
+    gamma_dot: float,
+    w: float,
+    w_rel: float,
+    mu: float,
+    r: float,
+    width: float,
+    c: float,
+) -> tuple[float, float]:
+    """Shear torques of the film (on the journal, on the bearing) [N m].
+
+    T_J = -T_c - c eps f_t / 2, T_B = T_c - c eps f_t / 2, T_c = 2 pi mu R^3 L w_rel /
+    (c sqrt(1 - eps^2)); w_rel = omega_journal - omega_bearing [rad/s] (module docstring).
+    """
+    _, f_t = film_force_components(model, eps, eps_dot, gamma_dot, w, mu, r, width, c)
+    couette = 2.0 * math.pi * mu * r**3 * width * w_rel / (c * math.sqrt(1.0 - eps * eps))
+    offset = 0.5 * c * eps * f_t
+    return -couette - offset, couette - offset

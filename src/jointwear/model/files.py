@@ -1,0 +1,89 @@
+"""Reading model files: TOML text, and files that extend another model file.
+
+A file with ``extends = "other.toml"`` (a path relative to the file) is that model with the
+values under its ``[set]`` table changed, each dotted key addressing one value as in
+``jointwear run --set`` (array items by name). Beside them it may give its own ``name`` and
+``description``; the name defaults to the file's stem.
+"""
+
+import re
+import tomllib
+from pathlib import Path
+
+from .errors import ModelError
+from .overrides import apply_changes
+
+EXTENDING_KEYS = ("extends", "set", "name", "description")
+
+
+def read_model_data(path: Path) -> dict:
+    """The model's tables from the TOML file at `path`, with its ``extends`` resolved.
+
+    Raises
+    ------
+    ModelError
+        If a file cannot be read or is not valid TOML, or an extending file is malformed or
+        extends itself through a chain of files.
+    """
+    return _resolve(Path(path), ())
+
+
+def _resolve(path: Path, chain: tuple[Path, ...]) -> dict:
+    data = _read_toml(path)
+    if "extends" not in data:
+        if "set" in data:
+            raise ModelError([f"{path}: set: only a file with 'extends' may change values"])
+        return data
+    base = data["extends"]
+    if not isinstance(base, str) or not base:
+        raise ModelError([f"{path}: extends: expected the path of a model file, as a string"])
+    extra = [key for key in data if key not in EXTENDING_KEYS]
+    if extra:
+        raise ModelError(
+            [
+                f"{path}: {key}: a file that extends another may only give "
+                f"{', '.join(EXTENDING_KEYS)}; change values under [set]"
+                for key in extra
+            ]
+        )
+    changes = data.get("set", {})
+    if not isinstance(changes, dict):
+        raise ModelError([f"{path}: set: expected a table of values to change"])
+    here = path.resolve()
+    base_path = path.parent / base
+    if base_path.resolve() in (*chain, here):
+        files = " -> ".join(str(p) for p in (*chain, here, base_path.resolve()))
+        raise ModelError([f"{path}: extends: the files extend each other in a loop: {files}"])
+    try:
+        resolved = _resolve(base_path, (*chain, here))
+    except ModelError as error:
+        raise ModelError([f"{path}: extends {base!r}: {line}" for line in error.problems]) from None
+    resolved = apply_changes(resolved, _leaves(changes, ()))
+    resolved["name"] = data.get("name", path.stem)
+    if "description" in data:
+        resolved["description"] = data["description"]
+    return resolved
+
+
+def _leaves(table: dict, prefix: tuple[str, ...]) -> list[tuple[str, object]]:
+    """The (dotted path, value) of every value in a nested table; tables are walked into."""
+    out: list[tuple[str, object]] = []
+    for key, value in table.items():
+        if isinstance(value, dict) and value:
+            out += _leaves(value, (*prefix, key))
+        else:
+            out.append((".".join((*prefix, key)), value))
+    return out
+
+
+def _read_toml(path: Path) -> dict:
+    try:
+        return tomllib.loads(path.read_bytes().decode())
+    except OSError as error:
+        raise ModelError([f"{path}: cannot read the file; {error.strerror}"]) from None
+    except UnicodeDecodeError:
+        raise ModelError([f"{path}: not UTF-8 text; a model file is TOML"]) from None
+    except tomllib.TOMLDecodeError as error:
+        where = re.fullmatch(r"(.*) \(at line (\d+), column (\d+)\)", str(error))
+        place, what = (f"{path}:{where[2]}:{where[3]}", where[1]) if where else (path, error)
+        raise ModelError([f"{place}: invalid TOML: {what}; fix the syntax there"]) from None
