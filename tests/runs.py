@@ -15,6 +15,19 @@ def simulate_ok(path: Path, overrides: list[str], *, ideal: bool = False) -> jw.
     return res
 
 
+def disc(name: str, mass: float, inertia: float, **keys) -> dict:
+    """A body at the origin with one point ``c`` at its centre of mass (``keys`` override)."""
+    return {
+        "name": name,
+        "mass": mass,
+        "inertia": inertia,
+        "position": [0.0, 0.0],
+        "angle": 0.0,
+        "points": {"c": [0.0, 0.0]},
+        **keys,
+    }
+
+
 # The paper four-bar's time-series columns, spelled out from the model's own names.
 _FOURBAR_BODIES = [
     "time",

@@ -19,6 +19,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from runs import disc
 from scipy.integrate import quad, solve_ivp
 from scipy.optimize import brentq
 
@@ -62,19 +63,6 @@ def clearance(**keys) -> dict:
     }
     table.update(keys)
     return table
-
-
-def disc(name: str, mass: float, inertia: float, **keys) -> dict:
-    """A body at the origin with one point ``c`` at its centre of mass (``keys`` override)."""
-    return {
-        "name": name,
-        "mass": mass,
-        "inertia": inertia,
-        "position": [0.0, 0.0],
-        "angle": keys.pop("angle", 0.0),
-        "points": {"c": [0.0, 0.0]},
-        **keys,
-    }
 
 
 def unit(degrees: float) -> np.ndarray:

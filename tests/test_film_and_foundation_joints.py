@@ -19,6 +19,7 @@ import math
 
 import numpy as np
 import pytest
+from runs import disc
 from scipy.optimize import brentq
 
 import jointwear as jw
@@ -51,19 +52,6 @@ def clearance(**keys) -> dict:
     }
     table.update(keys)
     return table
-
-
-def disc(name: str, mass: float, inertia: float, **keys) -> dict:
-    """A body at the origin with one point ``c`` at its centre of mass (``keys`` override)."""
-    return {
-        "name": name,
-        "mass": mass,
-        "inertia": inertia,
-        "position": [0.0, 0.0],
-        "angle": 0.0,
-        "points": {"c": [0.0, 0.0]},
-        **keys,
-    }
 
 
 def spin(name: str, body: str, speed: float) -> dict:
