@@ -23,6 +23,7 @@ from .kernels.codes import N_COUNTERS, Counter, Method, Status
 from .kernels.dynamics import Problem, make_dynamics_scratch
 from .kernels.elements import ElementLog, Elements, ElementScratch, ElementState
 from .kernels.elements.journal import DEGREES_OF_FREEDOM, N_IMPACT_INFO, make_journals
+from .kernels.elements.slider import SLOTS, make_sliders
 from .kernels.integrate.abm import make_abm_state
 from .kernels.integrate.rk import DOPRI5, S_T, make_rk_state
 from .kernels.structs import StructProxy, to_struct
@@ -75,15 +76,18 @@ def _kernel_arrays(
     table, state, element_log, scratch = make_journals(
         system.journal_ints, system.journal_params, n_snapshots
     )
+    s_table, s_state, s_log, s_scratch = make_sliders(
+        system.slider_ints, system.slider_params, n_snapshots
+    )
     n = n_state // 2
     problem = Problem(
         mech=system.mechanism,
-        elements=Elements(journal=table),
-        state=ElementState(journal=state),
-        scratch=ElementScratch(journal=scratch),
+        elements=Elements(journal=table, slider=s_table),
+        state=ElementState(journal=state, slider=s_state),
+        scratch=ElementScratch(journal=scratch, slider=s_scratch),
         dyn=make_dynamics_scratch(n, constraint_count(system.mechanism)),
     )
-    slots = system.journal_ints.shape[0]
+    slots = system.journal_ints.shape[0] + SLOTS * system.slider_ints.shape[0]
     # A step logs at most one crossing per event and one onset per slot: room for many steps.
     events = max(EVENT_CAPACITY, 16 * n_events)
     impacts = max(EVENT_CAPACITY, 16 * slots)
@@ -96,7 +100,7 @@ def _kernel_arrays(
         impact_time=np.zeros(impacts),
         impact_slot=np.zeros(impacts, dtype=np.int64),
         impact_info=np.zeros((impacts, N_IMPACT_INFO)),
-        elements=ElementLog(journal=element_log),
+        elements=ElementLog(journal=element_log, slider=s_log),
     )
     work = loop.Scratch(
         y=np.zeros(n_state),

@@ -14,6 +14,7 @@ from numpy.typing import NDArray
 
 from .kernels.codes import DriverKind, EventDirection, FunctionKind
 from .kernels.elements import journal as jc
+from .kernels.elements import slider as sc
 from .kernels.loop import UserEvents
 from .model import Model
 from .model.clearance import WEAR_DISTRIBUTIONS, Clearance, law_parameters
@@ -57,6 +58,8 @@ class System(NamedTuple):
     mechanism: Mechanism
     journal_ints: NDArray[np.int64]  # (nc, journal.N_INTS) revolute clearance joints
     journal_params: NDArray[np.float64]  # (nc, journal.N_PARAMS)
+    slider_ints: NDArray[np.int64]  # (ns, slider.N_INTS) translational clearance joints
+    slider_params: NDArray[np.float64]  # (ns, slider.N_PARAMS)
     events: UserEvents
 
 
@@ -291,6 +294,8 @@ def build_system(model: Model, *, ideal: bool = False) -> System:
         mechanism=mechanism,
         journal_ints=_table(clear["ints"], (jc.N_INTS,), np.int64),
         journal_params=_table(clear["params"], (jc.N_PARAMS,), np.float64),
+        slider_ints=np.zeros((0, sc.N_INTS), dtype=np.int64),
+        slider_params=np.zeros((0, sc.N_PARAMS)),
         events=events,
     )
 

@@ -36,11 +36,11 @@ from ..laws.wear import WearLaw, accumulate_wear, depth_at, hertz_line_contact, 
 from .journal_geometry import (
     apply_at_centres,
     apply_contact,
-    apply_torque,
     contact_velocities,
     eccentricity,
     surface_angles,
 )
+from .point_loads import apply_torque
 
 # Columns of JournalTable.ints.
 I_BEARING = 0  # bearing body (-1: ground)

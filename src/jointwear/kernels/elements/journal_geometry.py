@@ -21,6 +21,7 @@ import math
 from numba import njit
 
 from ..kinematics import angle, angular_velocity, point_position, point_velocity
+from .point_loads import apply_force_at
 
 
 @njit(cache=True)
@@ -67,8 +68,8 @@ def apply_contact(q, g, ib, sb_x, sb_y, ij, sj_x, sj_y, nx, ny, r_b, r_j, f_n, f
     tx, ty = -ny, nx
     fx = -f_n * nx + f_t * tx
     fy = -f_n * ny + f_t * ty
-    _apply_at(q, g, ij, sj_x, sj_y, r_j * nx, r_j * ny, fx, fy)
-    _apply_at(q, g, ib, sb_x, sb_y, r_b * nx, r_b * ny, -fx, -fy)
+    apply_force_at(q, g, ij, sj_x, sj_y, r_j * nx, r_j * ny, fx, fy)
+    apply_force_at(q, g, ib, sb_x, sb_y, r_b * nx, r_b * ny, -fx, -fy)
 
 
 @njit(cache=True)
@@ -77,25 +78,5 @@ def apply_at_centres(q, g, ib, sb_x, sb_y, ij, sj_x, sj_y, fx, fy):
 
     A lubricant film's pressure is radial, so its resultant passes through both centres.
     """
-    _apply_at(q, g, ij, sj_x, sj_y, 0.0, 0.0, fx, fy)
-    _apply_at(q, g, ib, sb_x, sb_y, 0.0, 0.0, -fx, -fy)
-
-
-@njit(cache=True)
-def apply_torque(g, b, torque):
-    """Add a torque [N m] to body b (nothing for the ground, b < 0)."""
-    if b >= 0:
-        g[3 * b + 2] += torque
-
-
-@njit(cache=True)
-def _apply_at(q, g, b, s_x, s_y, off_x, off_y, fx, fy):
-    """Force (fx, fy) at the point off from body point s (global offset) of body b."""
-    if b < 0:
-        return
-    px, py = point_position(q, b, s_x, s_y)
-    arm_x = px + off_x - q[3 * b]
-    arm_y = py + off_y - q[3 * b + 1]
-    g[3 * b] += fx
-    g[3 * b + 1] += fy
-    g[3 * b + 2] += arm_x * fy - arm_y * fx
+    apply_force_at(q, g, ij, sj_x, sj_y, 0.0, 0.0, fx, fy)
+    apply_force_at(q, g, ib, sb_x, sb_y, 0.0, 0.0, -fx, -fy)
