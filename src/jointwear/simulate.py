@@ -21,17 +21,15 @@ from .interrupts import stop_requests
 from .kernels import loop
 from .kernels.codes import N_COUNTERS, Counter, Method, Status
 from .kernels.dynamics import Problem, make_dynamics_scratch
-from .kernels.elements import ElementLog, Elements, ElementScratch, ElementState
-from .kernels.elements.journal import DEGREES_OF_FREEDOM, N_IMPACT_INFO, make_journals
-from .kernels.elements.slider import SLOTS, make_sliders
+from .kernels.elements import ElementLog, Elements, ElementScratch, ElementState, journal, slider
 from .kernels.integrate.abm import make_abm_state
 from .kernels.integrate.rk import DOPRI5, S_T, make_rk_state
 from .kernels.structs import StructProxy, to_struct
 from .model import Model
 from .results import Results
+from .results import slider as slider_results
 from .results.clearance import (
-    IMPACT_COLUMNS,
-    clearance_joint_names,
+    impact_columns,
     impact_rows,
     joint_summaries,
     snapshot_table,
@@ -39,7 +37,13 @@ from .results.clearance import (
 )
 from .results.run_state import RunState
 from .status import status_message
-from .system import System, build_system, column_names, constraint_count
+from .system import (
+    System,
+    build_system,
+    column_names,
+    constraint_count,
+    freed_degrees_of_freedom,
+)
 
 CHUNK_WALL_S = 0.2  # target wall time of one compiled chunk [s]
 MIN_CHUNK_STEPS = 100  # the first chunk: this many maximum steps, and at least this many steps
@@ -73,10 +77,10 @@ def _kernel_arrays(
     system: System, n_state: int, n_events: int, n_snapshots: int
 ) -> tuple[Problem, loop.Log, loop.Scratch]:
     """The problem the right-hand side reads, the run's log and the loop's scratch."""
-    table, state, element_log, scratch = make_journals(
+    table, state, element_log, scratch = journal.make_journals(
         system.journal_ints, system.journal_params, n_snapshots
     )
-    s_table, s_state, s_log, s_scratch = make_sliders(
+    s_table, s_state, s_log, s_scratch = slider.make_sliders(
         system.slider_ints, system.slider_params, n_snapshots
     )
     n = n_state // 2
@@ -87,7 +91,7 @@ def _kernel_arrays(
         scratch=ElementScratch(journal=scratch, slider=s_scratch),
         dyn=make_dynamics_scratch(n, constraint_count(system.mechanism)),
     )
-    slots = system.journal_ints.shape[0] + SLOTS * system.slider_ints.shape[0]
+    slots = system.journal_ints.shape[0] + slider.SLOTS * system.slider_ints.shape[0]
     # A step logs at most one crossing per event and one onset per slot: room for many steps.
     events = max(EVENT_CAPACITY, 16 * n_events)
     impacts = max(EVENT_CAPACITY, 16 * slots)
@@ -99,7 +103,7 @@ def _kernel_arrays(
         event_rising=np.zeros(events, dtype=np.int64),
         impact_time=np.zeros(impacts),
         impact_slot=np.zeros(impacts, dtype=np.int64),
-        impact_info=np.zeros((impacts, N_IMPACT_INFO)),
+        impact_info=np.zeros((impacts, max(journal.N_IMPACT_INFO, slider.N_IMPACT_INFO))),
         elements=ElementLog(journal=element_log, slider=s_log),
     )
     work = loop.Scratch(
@@ -134,7 +138,7 @@ def simulate(
         Called after every chunk with the time reached and the end time [s].
     initial
         Where to start: by default the assembled initial pose at t = 0 with every journal
-        centred and unworn; or the state another run of the same model ended in
+        and slider centred and unworn; or the state another run of the same model ended in
         (``Results.final``), possibly with other worn profiles (``RunState.with_wear``). The
         run then goes on from ``initial.time`` to ``initial.time + t_end``.
 
@@ -166,9 +170,8 @@ def simulate(
     problem, log, scratch = _kernel_arrays(
         system, n_state, len(model.events), ctl.snapshot_times.shape[0]
     )
-    journals = problem.state.journal
-    joint_names = clearance_joint_names(model)
-    impacts: list[tuple] = []
+    journals, sliders = problem.state.journal, problem.state.slider
+    impacts: list[dict] = []
     columns = column_names(model)
     buffer = np.zeros((max(ctl.rows_per_step * 4, 1024), len(columns)))
     blocks: list[np.ndarray] = []
@@ -176,11 +179,14 @@ def simulate(
 
     y0 = assembly.y0
     if initial is not None:
-        _check_initial(initial, y0, journals.wear)
+        _check_initial(initial, y0, journals.wear, sliders.wear)
         y0 = initial.y
         journals.wear[:] = initial.wear
         journals.contact_on[:] = initial.contact_on
         journals.impact_speed[:] = initial.impact_speed
+        sliders.wear[:] = initial.slider_wear
+        sliders.contact_on[:] = initial.slider_contact_on
+        sliders.impact_speed[:] = initial.slider_impact_speed
 
     wall_start = time.perf_counter()
     status = Status.RUNNING
@@ -203,7 +209,7 @@ def simulate(
                 events.append((log.event_time[i], name, direction))
             log.counters[Counter.EVENTS] = 0
             impacts += impact_rows(
-                joint_names, log.impact_time, log.impact_slot, log.impact_info,
+                model, log.impact_time, log.impact_slot, log.impact_info,
                 log.counters[Counter.IMPACTS],
             )  # fmt: skip
             log.counters[Counter.IMPACTS] = 0
@@ -227,6 +233,9 @@ def simulate(
         wear=journals.wear.copy(),
         contact_on=journals.contact_on.copy(),
         impact_speed=journals.impact_speed.copy(),
+        slider_wear=sliders.wear.copy(),
+        slider_contact_on=sliders.contact_on.copy(),
+        slider_impact_speed=sliders.impact_speed.copy(),
     )
 
     data = np.concatenate(blocks) if blocks else np.zeros((0, len(columns)))
@@ -239,16 +248,16 @@ def simulate(
         "min_step_hits": int(log.counters[Counter.MIN_STEP_HITS]),
         "max_constraint_violation": float(log.max_violation[0]),
         "assembly_iterations": assembly.iterations,
-        "degrees_of_freedom": assembly.dof + DEGREES_OF_FREEDOM * len(joint_names),
+        "degrees_of_freedom": assembly.dof + freed_degrees_of_freedom(model),
     }
     tables = {}
-    if joint_names:
-        tables["wear"] = wear_table(model, journals.wear)
+    if model.has_clearance:
+        tables["wear"] = wear_table(model, journals.wear, sliders.wear)
         tables["wear_snapshots"] = snapshot_table(
             model, ctl.snapshot_times, log.elements.journal.snapshots,
-            int(log.counters[Counter.SNAPSHOTS]),
+            int(log.counters[Counter.SNAPSHOTS]), log.elements.slider.snapshots,
         )  # fmt: skip
-        tables["impacts"] = pd.DataFrame(impacts, columns=IMPACT_COLUMNS)
+        tables["impacts"] = pd.DataFrame.from_records(impacts, columns=impact_columns(model))
     summary = {
         "jointwear_version": __version__,
         "model": model.name,
@@ -257,10 +266,15 @@ def simulate(
         "settings": model.solver.model_dump(mode="json"),
         "stats": stats,
     }
-    if joint_names:
-        summary["clearance_joints"] = joint_summaries(
-            model, log.elements.journal.totals, journals.wear, t_reached - t0
+    if model.has_clearance:
+        duration = t_reached - t0
+        journal_figures = joint_summaries(
+            model, log.elements.journal.totals, journals.wear, duration
         )
+        slider_figures = slider_results.joint_summaries(
+            model, log.elements.slider.totals, sliders.wear, duration
+        )
+        summary["clearance_joints"] = journal_figures | slider_figures
     return Results(
         model=model,
         timeseries=pd.DataFrame(data, columns=columns),
@@ -271,9 +285,13 @@ def simulate(
     )
 
 
-def _check_initial(initial: RunState, y0: np.ndarray, wear: np.ndarray) -> None:
+def _check_initial(
+    initial: RunState, y0: np.ndarray, wear: np.ndarray, slider_wear: np.ndarray
+) -> None:
     """Refuse a starting state that does not fit the model."""
-    for name, given, expected in (("y", initial.y, y0), ("wear", initial.wear, wear)):
+    pairs = (("y", initial.y, y0), ("wear", initial.wear, wear),
+             ("slider_wear", initial.slider_wear, slider_wear))  # fmt: skip
+    for name, given, expected in pairs:
         if given.shape != expected.shape:
             raise ValueError(
                 f"initial.{name} has shape {given.shape}; this model needs {expected.shape}"

@@ -18,6 +18,7 @@ from .kernels.elements import slider as sc
 from .kernels.loop import UserEvents
 from .model import Model
 from .model.clearance import WEAR_DISTRIBUTIONS, Clearance, law_parameters
+from .model.slide_clearance import SlideClearance
 
 GROUND = -1
 MAX_COEFFICIENTS = 8
@@ -68,6 +69,13 @@ def constraint_count(mechanism: Mechanism) -> int:
     return 2 * mechanism.joint_kind.shape[0] + mechanism.driver_kind.shape[0]
 
 
+def freed_degrees_of_freedom(model: Model) -> int:
+    """Degrees of freedom the clearance joints add to the ideal mechanism's."""
+    return jc.DEGREES_OF_FREEDOM * len(model.clearance_joints) + (
+        sc.DEGREES_OF_FREEDOM * len(model.slider_joints)
+    )
+
+
 def column_names(model: Model) -> list[str]:
     """Names of the time-series columns, in the order ``kernels.outputs.write_row`` fills."""
     names = ["time"]
@@ -76,14 +84,17 @@ def column_names(model: Model) -> list[str]:
     for driver in model.drivers:
         names.append(f"{'torque' if driver.type == 'angle' else 'force'}_{driver.name}")
     clearance = model.clearance_joints
-    for joint in (j for j in model.joints if j not in clearance):
+    for joint in (j for j in model.joints if j.clearance is None):
         names += [f"{joint.name}_fx", f"{joint.name}_fy"]
     for joint in clearance:
         names += [f"{joint.name}_{c}" for c in jc.OUTPUT_NAMES]
         if joint.clearance.lubrication != "none":
             names += [f"{joint.name}_{c}" for c in jc.FILM_OUTPUT_NAMES]
+    for joint in model.slider_joints:
+        finite = joint.clearance.guide_length is not None
+        names += [f"{joint.name}_{c}" for c in sc.output_names(finite)]
     names += ["energy_kinetic", "energy_potential"]
-    if clearance:
+    if model.has_clearance:
         names.append("energy_contact")
     return [*names, "constraint_violation"]
 
@@ -159,11 +170,56 @@ def _clearance_row(
     return ints, param
 
 
+def _slider_row(
+    clearance: SlideClearance, guide: int, slider: int, points: list, axis: NDArray, angle0: float
+) -> tuple[list[int], NDArray[np.float64]]:
+    """The integer and the parameter row of one slider (``kernels.elements.slider``).
+
+    ``points`` are the guide's point and the slider's centre in their bodies' frames [m],
+    ``axis`` the guide's unit axis in its body's frame, and ``angle0`` the slider's angle
+    minus the guide's when the slider is level [rad].
+    """
+    laws = law_parameters(clearance)
+    ints = [0] * sc.N_INTS
+    ints[sc.I_GUIDE] = guide
+    ints[sc.I_SLIDER] = slider
+    ints[sc.I_NORMAL] = laws["normal"].code
+    ints[sc.I_DAMPING] = laws["damping"].code
+    ints[sc.I_FRICTION] = laws["friction"].code
+    ints[sc.I_WEAR] = laws["wear"].code
+    ints[sc.I_FEEDBACK] = int(clearance.wear_feedback)
+    ints[sc.I_SEGMENTS] = clearance.segments
+    ints[sc.I_ENDS] = int(clearance.guide_length is not None)
+    c, s = np.cos(angle0), np.sin(angle0)
+    param = np.zeros(sc.N_PARAMS)
+    param[[sc.P_G_X, sc.P_G_Y]] = points[0]
+    param[[sc.P_U_X, sc.P_U_Y]] = axis
+    param[[sc.P_S_X, sc.P_S_Y]] = points[1]
+    param[[sc.P_US_X, sc.P_US_Y]] = (c * axis[0] + s * axis[1], -s * axis[0] + c * axis[1])
+    param[sc.P_A] = 0.5 * clearance.slider_length
+    param[sc.P_B] = 0.5 * clearance.slider_height
+    param[sc.P_H] = clearance.guide_half_height
+    param[sc.P_L] = 0.5 * (clearance.guide_length or 0.0)
+    param[sc.P_K] = clearance.stiffness
+    param[sc.P_EXP] = clearance.exponent
+    (param[sc.P_CE],) = laws["damping"].parameters
+    param[sc.P_CF] = clearance.friction_coefficient
+    param[[sc.P_F0, sc.P_F1, sc.P_F2]] = laws["friction"].parameters
+    param[sc.P_WEAR] = laws["wear"].parameters[0]
+    param[sc.P_SHARE] = clearance.slider_wear_share
+    param[sc.P_WIDTH] = clearance.width
+    param[sc.P_ESTAR] = clearance.contact_modulus
+    param[sc.P_MIN_SPEED] = clearance.min_impact_speed
+    param[sc.P_TOL] = clearance.contact_tolerance
+    param[sc.P_ANGLE0] = angle0
+    return ints, param
+
+
 def build_system(model: Model, *, ideal: bool = False) -> System:
     """Build the kernel arrays of ``model`` (validated, SI).
 
-    Clearance joints become rows of the clearance table; with ``ideal`` they are ideal
-    revolute joints instead (the assembly's "journal centred" mechanism, SPEC sec. 1).
+    Clearance joints become rows of their element kind's table; with ``ideal`` they are ideal
+    joints instead (the assembly's "journal centred" mechanism, SPEC sec. 1).
     """
     index = {b.name: i for i, b in enumerate(model.bodies)}
     index["ground"] = GROUND
@@ -181,25 +237,34 @@ def build_system(model: Model, *, ideal: bool = False) -> System:
 
     functions = _Functions()
     joints = {"kind": [], "body": [], "point": [], "axis": [], "angle0": [], "row": []}
-    clearances = model.clearance_joints
     kernel_index: dict[str, int] = {}  # ideal joints: row of the kernels' joint table
     clear = {"ints": [], "params": []}
+    slides = {"ints": [], "params": []}
     row = 0
     for joint in model.joints:
         b1, b2 = joint.bodies
-        if joint in clearances and not ideal:
-            centres = [local(b1, joint.points[0]), local(b2, joint.points[1])]
-            ints, params = _clearance_row(joint.clearance, index[b1], index[b2], centres)
-            clear["ints"].append(ints)
-            clear["params"].append(params)
+        points = [local(b1, joint.points[0]), local(b2, joint.points[1])]
+        axis = np.array(getattr(joint, "axis", (1.0, 0.0)), dtype=float)
+        axis /= np.linalg.norm(axis)
+        angle0 = pose[b2][2] - pose[b1][2]
+        if joint.clearance is not None and not ideal:
+            if joint.type == "revolute":
+                ints, params = _clearance_row(joint.clearance, index[b1], index[b2], points)
+                table = clear
+            else:
+                ints, params = _slider_row(
+                    joint.clearance, index[b1], index[b2], points, axis, angle0
+                )
+                table = slides
+            table["ints"].append(ints)
+            table["params"].append(params)
             continue
         kernel_index[joint.name] = len(joints["kind"])
         joints["kind"].append(int(joint.kind))
         joints["body"].append([index[b1], index[b2]])
-        joints["point"].append([local(b1, joint.points[0]), local(b2, joint.points[1])])
-        axis = np.array(getattr(joint, "axis", (1.0, 0.0)), dtype=float)
-        joints["axis"].append(axis / np.linalg.norm(axis))
-        joints["angle0"].append(pose[b2][2] - pose[b1][2])
+        joints["point"].append(points)
+        joints["axis"].append(axis)
+        joints["angle0"].append(angle0)
         joints["row"].append(row)
         row += 2
 
@@ -294,8 +359,8 @@ def build_system(model: Model, *, ideal: bool = False) -> System:
         mechanism=mechanism,
         journal_ints=_table(clear["ints"], (jc.N_INTS,), np.int64),
         journal_params=_table(clear["params"], (jc.N_PARAMS,), np.float64),
-        slider_ints=np.zeros((0, sc.N_INTS), dtype=np.int64),
-        slider_params=np.zeros((0, sc.N_PARAMS)),
+        slider_ints=_table(slides["ints"], (sc.N_INTS,), np.int64),
+        slider_params=_table(slides["params"], (sc.N_PARAMS,), np.float64),
         events=events,
     )
 

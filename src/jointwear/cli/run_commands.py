@@ -14,7 +14,11 @@ from .common import ModelPath, Overrides, err, fail, out
 from .progress import CompileNotice, ProgressBar
 
 if TYPE_CHECKING:
-    from ..model.clearance import Clearance
+    from numpy.typing import NDArray
+
+    from ..model import Model
+    from ..model.clearance import Clearance, ContactKeys
+    from ..model.sections import TranslationalJoint
 
 PROGRESS_AFTER_S = 1.0  # show a progress bar only for runs longer than this
 HERTZ_REFERENCE_FORCES = (100.0, 1000.0)  # loads at which `check` shows the Hertz patch [N]
@@ -105,16 +109,32 @@ def _range_warnings(name: str, joint: dict) -> list[str]:
 
 def _joint_line(name: str, joint: dict) -> str:
     """One line of a clearance joint's headline figures."""
-    wear = []
-    for surface in ("journal", "bearing"):
-        angle = joint[f"max_wear_angle_{surface}_deg"]
-        where = f" at {angle:.4g}°" if angle is not None else ""
-        wear.append(f"{surface} {joint[f'max_wear_depth_{surface}_m'] * 1e6:.4g} µm{where}")
+    revolute = joint.get("type", "revolute") == "revolute"
+    depth = "{0} {1:.4g} µm{2}"
+    wear = [
+        depth.format(
+            surface, joint[f"max_wear_depth_{surface}_m"] * 1e6, _wear_place(joint, surface)
+        )
+        for surface in (("journal", "bearing") if revolute else SLIDER_SURFACES)
+        if f"max_wear_depth_{surface}_m" in joint  # an unbounded guide keeps no wear map
+    ]
     return (
         f"{name}: max contact force {joint['max_contact_force_n'] / 1e3:.4g} kN, in contact "
         f"{100 * joint['contact_time_fraction']:.4g} % of the time, {joint['impacts']} impacts; "
         f"max wear depth {', '.join(wear)}"
     )
+
+
+SLIDER_SURFACES = ("guide_top", "guide_bottom", "slider_top", "slider_bottom")
+
+
+def _wear_place(joint: dict, surface: str) -> str:
+    """Where a surface's deepest wear is: " at <angle>°" or " at <position> mm"; "" if unworn."""
+    angle = joint.get(f"max_wear_angle_{surface}_deg")
+    position = joint.get(f"max_wear_position_{surface}_m")
+    if angle is not None:
+        return f" at {angle:.4g}°"
+    return "" if position is None else f" at {position * 1e3:.4g} mm"
 
 
 PENETRATION_SHARES = (0.01, 0.1, 0.4)  # of the clearance, where check shows the contact law
@@ -128,7 +148,7 @@ def check(model: ModelPath, overrides: Overrides = None) -> None:
     """
     from ..assembly import assemble  # the model schema and one compiled kernel, no pandas
     from ..model import ModelError, load_model
-    from ..system import build_system
+    from ..system import build_system, freed_degrees_of_freedom
 
     try:
         parsed = load_model(model, overrides or [])
@@ -136,7 +156,7 @@ def check(model: ModelPath, overrides: Overrides = None) -> None:
     except ModelError as error:
         raise fail(error) from None
     out.print(f"model '{parsed.name}': valid")
-    freed = 2 * len(parsed.clearance_joints)
+    freed = freed_degrees_of_freedom(parsed)
     out.print(
         f"degrees of freedom: {assembly.dof_without_drivers + freed} (joints only), "
         f"{assembly.dof + freed} with drivers"
@@ -156,12 +176,12 @@ def check(model: ModelPath, overrides: Overrides = None) -> None:
     out.print(table)
     for joint in parsed.clearance_joints:
         out.print(_clearance_table(joint.name, joint.clearance))
+    for joint in parsed.slider_joints:
+        out.print(_slider_table(parsed, joint, assembly.y0))
 
 
 def _clearance_table(name: str, clearance: Clearance) -> Table:
     """The derived contact parameters of a clearance joint, and its laws with their keys."""
-    from ..model.clearance import FAMILIES
-
     table = Table(title=f"clearance joint '{name}'", caption_justify="left")
     table.add_column("quantity")
     table.add_column("value", justify="right")
@@ -183,7 +203,47 @@ def _clearance_table(name: str, clearance: Clearance) -> Table:
         b, p_max = clearance.hertz_patch(force)
         rows.append((f"Hertz half-width b at {force:g} N", b * 1e3, "mm"))
         rows.append((f"Hertz peak pressure at {force:g} N", p_max / 1e6, "MPa"))
-    rows.append(("friction coefficient c_f", clearance.friction_coefficient, ""))
+    rows += _law_rows(clearance, table)
+    rows.append((f"sectors per surface ({clearance.wear_distribution})", clearance.sectors, ""))
+    return _filled(table, rows)
+
+
+def _slider_table(model: Model, joint: TranslationalJoint, y0: NDArray) -> Table:
+    """How a translational clearance joint is laid out, its contact law and its laws' keys."""
+    c = joint.clearance
+    table = Table(title=f"translational clearance joint '{joint.name}'", caption_justify="left")
+    for column in ("quantity", "value", "unit"):
+        table.add_column(column, justify="right" if column == "value" else "left")
+    guide = joint.bodies[0]
+    phi = 0.0 if guide == "ground" else y0[3 * model.body_names.index(guide) + 2]
+    axis = math.degrees(math.atan2(*reversed(joint.axis)) + phi)
+    rows = [
+        ("gap on each side c", c.clearance_gap * 1e3, "mm"),
+        (f"guide (on '{guide}'): height", 2 * c.guide_half_height * 1e3, "mm"),
+        ("  length", "unbounded" if c.guide_length is None else c.guide_length * 1e3, "mm"),
+        ("  axis, from global x at the start", axis, "deg"),
+        (f"slider (on '{joint.bodies[1]}'): length", c.slider_length * 1e3, "mm"),
+        ("  height", c.slider_height * 1e3, "mm"),
+        ("contacts", "4 corners" + (" + 4 guide ends" if c.guide_length else ""), ""),
+        (f"contact stiffness K (n = {c.exponent:g})", c.stiffness, "N/m^n"),
+        ("contact modulus E*", c.contact_modulus / 1e9, "GPa"),
+    ]
+    if c.corner_radius is not None:
+        rows.append(("corner radius r (K = 4/3 E* sqrt(r))", c.corner_radius * 1e3, "mm"))
+    for share in PENETRATION_SHARES:
+        force, stiffness = c.elastic_force(share * c.clearance_gap)
+        rows.append((f"force F at delta = {share:.0%} of c", force / 1e3, "kN"))
+        rows.append(("stiffness dF/d(delta) there", stiffness, "N/m"))
+    rows += _law_rows(c, table)
+    rows.append(("segments per surface", c.segments, ""))
+    return _filled(table, rows)
+
+
+def _law_rows(clearance: ContactKeys, table: Table) -> list[tuple]:
+    """Rows of the friction coefficient and each chosen law with its keys; the caption too."""
+    from ..model.clearance import FAMILIES
+
+    rows: list[tuple] = [("friction coefficient c_f", clearance.friction_coefficient, "")]
     summaries = []
     for family, (law_key, laws) in FAMILIES.items():
         law = laws[getattr(clearance, law_key)]
@@ -193,7 +253,10 @@ def _clearance_table(name: str, clearance: Clearance) -> Table:
             rows.append(("  Archard k (as used)", clearance.archard_coefficient, "1/Pa"))
         summaries.append(f"{law.name}: {law.summary}")
     table.caption = "\n".join(summaries)
-    rows.append((f"sectors per surface ({clearance.wear_distribution})", clearance.sectors, ""))
+    return rows
+
+
+def _filled(table: Table, rows: list[tuple]) -> Table:
     for quantity, value, unit in rows:
         shown = "-" if value is None else value if isinstance(value, str) else f"{value:.6g}"
         table.add_row(escape(quantity), shown, escape(unit))

@@ -4,6 +4,8 @@ The joint's first body carries the bearing (the hole, centred on the joint's fir
 the second the journal (the pin, centred on its second point). Laws are chosen by name from
 the kernels' codes; each law's parameters are separate keys, and a key that the chosen law
 does not use is refused, so a model never carries a setting that silently does nothing.
+``ContactKeys`` holds what every clearance joint shares (materials, laws, wear); the
+translational joint's table is ``model.slide_clearance``.
 """
 
 from typing import Annotated, NamedTuple
@@ -93,13 +95,13 @@ class PackedLaw(NamedTuple):
     parameters: tuple[float, ...]
 
 
-def law_parameters(clearance: "Clearance") -> dict[str, PackedLaw]:
+def law_parameters(clearance: "ContactKeys") -> dict[str, PackedLaw]:
     """Per family ("normal", "friction", "wear"): the chosen law's code and packed parameters."""
     return {family: _packed(clearance, law_key, laws) for family, (law_key, laws) in
             FAMILIES.items()}  # fmt: skip
 
 
-def _packed(clearance: "Clearance", law_key: str, laws: dict[str, Law]) -> PackedLaw:
+def _packed(clearance: "ContactKeys", law_key: str, laws: dict[str, Law]) -> PackedLaw:
     """The chosen law of one family, packed; ValueError saying what it needs, if it cannot."""
     law = laws[getattr(clearance, law_key)]
     values = {key.name: getattr(clearance, key.name) for key in law.keys}
@@ -118,17 +120,15 @@ def _plain_stiffness(value: object) -> object:
     return value
 
 
-class Clearance(_LawKeys):
-    """A revolute joint with clearance: journal in bearing, contact, friction and wear (SI).
+class ContactKeys(_LawKeys):
+    """The keys every clearance joint shares: materials, contact, friction and wear laws (SI).
 
     The keys of the laws (restitution, friction speeds, wear coefficients, ...) come from the
-    law registries (``_LawKeys``); the rest are the joint's own.
+    law registries (``_LawKeys``). Pairs of material values are [first body, second body].
     """
 
-    bearing_radius: PositiveLength
-    journal_radius: PositiveLength
     width: PositiveLength
-    youngs_modulus: Modulus | tuple[Modulus, Modulus]  # both, or [bearing, journal]
+    youngs_modulus: Modulus | tuple[Modulus, Modulus]  # both, or [first body, second body]
     poisson_ratio: Poisson | tuple[Poisson, Poisson]
     normal_law: Annotated[str, one_of(NORMAL_LAWS, "normal law")] = "hertz"
     damping: Annotated[str, one_of(DAMPING_LAWS, "damping law")] = "lankarani_nikravesh"
@@ -139,11 +139,8 @@ class Clearance(_LawKeys):
     friction_law: Annotated[str, one_of(FRICTION_LAWS, "friction law")] = "ambrosio"
     friction_coefficient: Annotated[Number, Ge(0)]
     wear_law: Annotated[str, one_of(WEAR_LAWS, "wear law")] = "archard"
-    journal_wear_share: Annotated[Number, Ge(0), Le(1)] = 0.5
-    wear_distribution: Annotated[str, one_of(WEAR_DISTRIBUTIONS, "wear distribution")] = "hertz"
     lubrication: Annotated[str, one_of(LUBRICATION_LAWS, "lubrication")] = "none"
     wear_feedback: bool = True
-    sectors: Annotated[int, Ge(4), Le(100_000)] = 36
 
     @model_validator(mode="before")
     @classmethod
@@ -159,30 +156,12 @@ class Clearance(_LawKeys):
             )
         return {**data, "normal_law": "hertz", "damping": law}
 
-    @model_validator(mode="after")
-    def _consistent(self) -> "Clearance":
-        problems = [*self._unused_keys(), *self._law_problems()]
-        if self.journal_radius >= self.bearing_radius:
-            problems.append(
-                f"journal_radius {self.journal_radius * 1e3:.12g} mm must be smaller than "
-                f"bearing_radius {self.bearing_radius * 1e3:.12g} mm (the radial clearance is "
-                "their difference)"
-            )
-        elif self.contact_tolerance >= self.radial_clearance:
-            problems.append(
-                f"contact_tolerance {self.contact_tolerance:g} m must be much smaller than the "
-                f"radial clearance {self.radial_clearance:g} m (default 1e-10 m)"
-            )
-        if problems:
-            raise ValueError("; ".join(problems))
-        return self
-
     def _unused_keys(self) -> list[str]:
         lines = []  # a default value is not a setting (and model.json writes them all)
         for law_key, users in _LAW_KEYS.items():
             chosen = getattr(self, law_key)
             for key, laws in users.items():
-                given = getattr(self, key) != Clearance.model_fields[key].default
+                given = getattr(self, key) != type(self).model_fields[key].default
                 if given and chosen not in laws:
                     names = " or ".join(f"'{law}'" for law in laws)
                     lines.append(
@@ -207,11 +186,6 @@ class Clearance(_LawKeys):
                     f"'{self.normal_law}' (its stiffness follows from the materials and "
                     'geometry); remove it or choose normal_law = "hertz"'
                 )
-        if self.normal_law == "elastic_foundation" and self.poisson_ratios[0] >= 0.5:
-            lines.append(
-                "normal_law 'elastic_foundation' needs the bearing's poisson_ratio below 0.5 "
-                "(its layer modulus (1 - nu) E / ((1 + nu)(1 - 2 nu)) is infinite at 0.5)"
-            )
         if (
             self.normal_law == "hertz"
             and self.exponent != HERTZ_EXPONENT
@@ -228,24 +202,69 @@ class Clearance(_LawKeys):
 
     @property
     def moduli(self) -> tuple[float, float]:
-        """Young's moduli of (bearing, journal) [Pa]."""
+        """Young's moduli of (first body, second body) [Pa]."""
         return self._pair(self.youngs_modulus)
 
     @property
     def poisson_ratios(self) -> tuple[float, float]:
-        """Poisson's ratios of (bearing, journal) [-]."""
+        """Poisson's ratios of (first body, second body) [-]."""
         return self._pair(self.poisson_ratio)
-
-    @property
-    def radial_clearance(self) -> float:
-        """Radial clearance c = R_B - R_J [m]."""
-        return self.bearing_radius - self.journal_radius
 
     @property
     def contact_modulus(self) -> float:
         """E* [Pa] of the two materials."""
         (e_b, e_j), (nu_b, nu_j) = self.moduli, self.poisson_ratios
         return effective_modulus(e_b, nu_b, e_j, nu_j)
+
+    @property
+    def archard_coefficient(self) -> float:
+        """Archard's dimensional k [1/Pa] (wear_coefficient, or K / H); 0 for Reye."""
+        if self.wear_law != "archard":
+            return 0.0
+        if self.wear_coefficient is not None:
+            return self.wear_coefficient
+        return self.dimensionless_wear_coefficient / self.hardness
+
+
+class Clearance(ContactKeys):
+    """A revolute joint with clearance: journal in bearing, contact, friction and wear (SI).
+
+    Material pairs are [bearing, journal].
+    """
+
+    bearing_radius: PositiveLength
+    journal_radius: PositiveLength
+    journal_wear_share: Annotated[Number, Ge(0), Le(1)] = 0.5
+    wear_distribution: Annotated[str, one_of(WEAR_DISTRIBUTIONS, "wear distribution")] = "hertz"
+    sectors: Annotated[int, Ge(4), Le(100_000)] = 36
+
+    @model_validator(mode="after")
+    def _consistent(self) -> "Clearance":
+        problems = [*self._unused_keys(), *self._law_problems()]
+        if self.normal_law == "elastic_foundation" and self.poisson_ratios[0] >= 0.5:
+            problems.append(
+                "normal_law 'elastic_foundation' needs the bearing's poisson_ratio below 0.5 "
+                "(its layer modulus (1 - nu) E / ((1 + nu)(1 - 2 nu)) is infinite at 0.5)"
+            )
+        if self.journal_radius >= self.bearing_radius:
+            problems.append(
+                f"journal_radius {self.journal_radius * 1e3:.12g} mm must be smaller than "
+                f"bearing_radius {self.bearing_radius * 1e3:.12g} mm (the radial clearance is "
+                "their difference)"
+            )
+        elif self.contact_tolerance >= self.radial_clearance:
+            problems.append(
+                f"contact_tolerance {self.contact_tolerance:g} m must be much smaller than the "
+                f"radial clearance {self.radial_clearance:g} m (default 1e-10 m)"
+            )
+        if problems:
+            raise ValueError("; ".join(problems))
+        return self
+
+    @property
+    def radial_clearance(self) -> float:
+        """Radial clearance c = R_B - R_J [m]."""
+        return self.bearing_radius - self.journal_radius
 
     @property
     def relative_radius(self) -> float:
@@ -277,15 +296,6 @@ class Clearance(_LawKeys):
         args = (delta, self.stiffness, self.exponent, self.contact_modulus,
                 self.radial_clearance, self.width)  # fmt: skip
         return elastic_force(code, *args), elastic_stiffness(code, *args)
-
-    @property
-    def archard_coefficient(self) -> float:
-        """Archard's dimensional k [1/Pa] (wear_coefficient, or K / H); 0 for Reye."""
-        if self.wear_law != "archard":
-            return 0.0
-        if self.wear_coefficient is not None:
-            return self.wear_coefficient
-        return self.dimensionless_wear_coefficient / self.hardness
 
     def hertz_patch(self, force: float) -> tuple[float, float]:
         """Half-width b [m] and peak pressure p_max [Pa] of the line contact under force [N]."""

@@ -64,7 +64,7 @@ def reference_problems(
     for i, joint in enumerate(joints):
         pair(f"joints[{i}]", joint, with_points=True)
     kinds = {joint.name: joint.type for joint in joints}
-    sliders = [name for name, kind in kinds.items() if kind == "translational"]
+    sliders = [j.name for j in joints if j.type == "translational" and j.clearance is None]
     for i, driver in enumerate(drivers):
         path = f"drivers[{i}]"
         if driver.type == "angle":
@@ -77,9 +77,11 @@ def reference_problems(
                 f"{path}.joint: {unknown('joint', driver.joint, list(kinds), 'joints')}"
             )
         elif driver.joint not in sliders:
+            kind = kinds[driver.joint]
+            kind += " with clearance" if kind == "translational" else ""
             problems.append(
-                f"{path}.joint: {driver.joint!r} is {kinds[driver.joint]}; a distance driver "
-                f"needs a translational joint ({', '.join(sliders) or 'there are none'})"
+                f"{path}.joint: {driver.joint!r} is {kind}; a distance driver needs an ideal "
+                f"translational joint ({', '.join(sliders) or 'there are none'})"
             )
     for i, force in enumerate(forces):
         path = f"forces[{i}]"

@@ -67,23 +67,27 @@ class Model(Table):
         return _named(self.joints, name)
 
     @property
-    def clearance_joints(self) -> tuple["RevoluteJoint", ...]:
-        """The joints with clearance, in file order (the kernels' clearance table order)."""
-        return tuple(j for j in self.joints if getattr(j, "clearance", None) is not None)
+    def clearance_joints(self) -> tuple[RevoluteJoint, ...]:
+        """The revolute joints with clearance, in file order (the kernels' journal order)."""
+        return tuple(
+            j for j in self.joints if isinstance(j, RevoluteJoint) and j.clearance is not None
+        )
+
+    @property
+    def slider_joints(self) -> tuple[TranslationalJoint, ...]:
+        """The translational joints with clearance, in file order (the kernels' slider order)."""
+        return tuple(
+            j for j in self.joints if isinstance(j, TranslationalJoint) and j.clearance is not None
+        )
 
     @property
     def has_clearance(self) -> bool:
         """Whether any joint has clearance."""
-        return bool(self.clearance_joints)
+        return bool(self.clearance_joints or self.slider_joints)
 
     def ideal(self) -> "Model":
-        """The same model with every clearance joint made ideal (journal centred)."""
-        joints = tuple(
-            joint.model_copy(update={"clearance": None})
-            if isinstance(joint, RevoluteJoint)
-            else joint
-            for joint in self.joints
-        )
+        """The same model with every clearance joint made ideal (journal and slider centred)."""
+        joints = tuple(joint.model_copy(update={"clearance": None}) for joint in self.joints)
         return self.model_copy(update={"joints": joints})
 
     def point(self, body: str, name: str) -> tuple[float, float]:

@@ -29,6 +29,7 @@ from ..units import (
 )
 from .clearance import Clearance
 from .functions import AngleFunction, DistanceFunction, ForceValue, TorqueValue
+from .slide_clearance import SlideClearance
 from .tables import Name, Number, Table, one_of
 
 INTEGRATORS: dict[str, Method] = {"dopri5": Method.DOPRI5, "abm": Method.ABM}
@@ -83,11 +84,17 @@ def _nonzero(axis: tuple[float, float]) -> tuple[float, float]:
 
 
 class TranslationalJoint(_Joint):
-    """Ideal slider along `axis` (first body's frame, any non-zero length)."""
+    """Slider along `axis` (first body's frame, any non-zero length).
+
+    Ideal without `clearance`; with it, `bodies[0]` has the guide (its centreline through
+    `points[0]`) and `bodies[1]` the slider (centred on `points[1]`), which touch through
+    contact forces instead of constraints.
+    """
 
     kind: ClassVar = JointKind.TRANSLATIONAL
     type: Literal["translational"] = "translational"
     axis: Annotated[tuple[Number, Number], AfterValidator(_nonzero)]
+    clearance: SlideClearance | None = None
 
 
 class AngleDriver(Table):

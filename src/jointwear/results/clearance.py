@@ -1,5 +1,8 @@
 """Tables and summary figures of a run's clearance joints, from the loop's arrays.
 
+Revolute joints here, translational ones in ``results.slider``; the tables join both kinds
+(each row leaves the other kind's columns empty).
+
 - wear profiles, one row per joint, surface and sector: ``joint, surface, sector,
   angle_deg, depth_m`` (``angle_deg`` is the sector's centre in the surface's body frame);
   the snapshots add the time they were taken, ``time_s``, in front;
@@ -21,6 +24,7 @@ from ..kernels.elements import journal as cs
 from ..kernels.laws.normal import ElasticLaw
 from ..model import Model
 from ..model.clearance import Clearance
+from . import slider
 
 SURFACES = ("bearing", "journal")
 UM = 1e6  # micrometres per metre, for messages and figures
@@ -35,13 +39,10 @@ IMPACT_COLUMNS = [
 ]
 
 
-def clearance_joint_names(model: Model) -> list[str]:
-    """Names of the clearance joints, in the order of the kernels' clearance table."""
-    return [joint.name for joint in model.clearance_joints]
-
-
-def wear_table(model: Model, wear: NDArray[np.float64]) -> pd.DataFrame:
-    """Long table of the wear depths ``wear[k, surface, sector]`` [m]."""
+def wear_table(
+    model: Model, wear: NDArray[np.float64], slider_wear: NDArray[np.float64] | None = None
+) -> pd.DataFrame:
+    """Long table of the wear depths ``wear[k, surface, sector]`` [m] (and the sliders')."""
     rows = []
     for k, joint in enumerate(model.clearance_joints):
         n = joint.clearance.sectors
@@ -49,35 +50,73 @@ def wear_table(model: Model, wear: NDArray[np.float64]) -> pd.DataFrame:
         for s, surface in enumerate(SURFACES):
             for i in range(n):
                 rows.append((joint.name, surface, i, centres[i], wear[k, s, i]))
-    return pd.DataFrame(rows, columns=WEAR_COLUMNS)
+    table = pd.DataFrame(rows, columns=WEAR_COLUMNS)
+    if slider_wear is None or not model.slider_joints:
+        return table
+    slides = slider.wear_table(model, slider_wear)
+    if not model.clearance_joints:
+        return slides
+    return pd.concat([table, slides], ignore_index=True)[wear_columns(model)]
+
+
+def wear_columns(model: Model) -> list[str]:
+    """The wear table's columns for the clearance joint kinds of ``model``."""
+    angle = ["angle_deg"] if model.clearance_joints else []
+    position = ["position_m"] if model.slider_joints else []
+    return [*WEAR_COLUMNS[:3], *angle, *position, "depth_m"]
 
 
 def snapshot_table(
-    model: Model, times: NDArray[np.float64], snapshots: NDArray[np.float64], taken: int
+    model: Model,
+    times: NDArray[np.float64],
+    snapshots: NDArray[np.float64],
+    taken: int,
+    slider_snapshots: NDArray[np.float64] | None = None,
 ) -> pd.DataFrame:
     """The wear snapshots taken so far, each with its time ``time_s`` [s]."""
-    tables = [wear_table(model, snapshots[i]).assign(time_s=times[i]) for i in range(taken)]
+    tables = [
+        wear_table(
+            model, snapshots[i], None if slider_snapshots is None else slider_snapshots[i]
+        ).assign(time_s=times[i])
+        for i in range(taken)
+    ]
     if not tables:
-        return pd.DataFrame(columns=["time_s", *WEAR_COLUMNS])
+        return pd.DataFrame(columns=["time_s", *wear_columns(model)])
     table = pd.concat(tables, ignore_index=True)
-    return table[["time_s", *WEAR_COLUMNS]]
+    return table[["time_s", *table.columns[:-1]]]
+
+
+def impact_columns(model: Model) -> list[str]:
+    """The impact table's columns for the clearance joint kinds of ``model``."""
+    kinds = []
+    if model.clearance_joints:
+        kinds += IMPACT_COLUMNS[3:5]
+    if model.slider_joints:
+        kinds += slider.IMPACT_COLUMNS[3:5]
+    return [*IMPACT_COLUMNS[:3], *kinds, IMPACT_COLUMNS[-1]]
 
 
 def impact_rows(
-    names: list[str], time: NDArray, joint: NDArray, info: NDArray, count: int
-) -> list[tuple]:
+    model: Model, time: NDArray, slot: NDArray, info: NDArray, count: int
+) -> list[dict]:
     """Rows of the impact table from the loop's impact log (``count`` entries)."""
-    return [
-        (
+    journals = len(model.clearance_joints)
+    rows = []
+    for i in range(count):
+        if slot[i] >= journals:
+            row = slider.impact_rows(model, time[i], slot[i] - journals, info[i])
+            rows.append(dict(zip(slider.IMPACT_COLUMNS, row, strict=True)))
+            continue
+        row = (
             float(time[i]),
-            names[joint[i]],
+            model.clearance_joints[slot[i]].name,
             float(info[i, cs.IMPACT_SPEED]),
             math.degrees(info[i, cs.IMPACT_THETA_B]),
             math.degrees(info[i, cs.IMPACT_THETA_J]),
             float(info[i, cs.IMPACT_DELTA]),
         )
-        for i in range(count)
-    ]
+        rows.append(dict(zip(IMPACT_COLUMNS, row, strict=True)))
+    return rows
 
 
 def joint_summaries(
@@ -92,6 +131,7 @@ def joint_summaries(
         c = joint.clearance
         row = totals[k]
         entry = {
+            "type": "revolute",
             "radial_clearance_m": c.radial_clearance,
             "max_contact_force_n": row[cs.T_MAX_FN],
             "contact_time_fraction": row[cs.T_CONTACT_TIME] / duration if duration else 0.0,

@@ -76,7 +76,9 @@ class Results:
 
 
 _CLEARANCE_TABLES = ("wear", "wear_snapshots", "impacts")
-_FLOAT_COLUMNS = {"angle_deg": float, "depth_m": float, "time_s": float}  # "5" is still 5.0
+# Read as floats even when every value is whole ("5" is still 5.0).
+_FLOAT_COLUMNS = {"angle_deg": float, "position_m": float, "guide_position_m": float,
+                  "depth_m": float, "time_s": float}  # fmt: skip
 
 
 def _write_csv(table: pd.DataFrame, path: Path) -> None:

@@ -137,6 +137,7 @@ IMPACT_SPEED = 0  # penetration rate at onset [m/s]
 IMPACT_X_GUIDE = 1  # where along the guide [m]
 IMPACT_CONTACT = 2  # contact slot within the joint (CONTACT_NAMES)
 IMPACT_DELTA = 3  # penetration where the onset was located [m]
+N_IMPACT_INFO = 4
 
 # Time-series columns per joint: the slider's lateral offset and tilt, the force on it, and
 # each contact's normal force (the edges' only for a finite guide).

@@ -171,8 +171,13 @@ def life(
         driver, period = cycle_driver(model)
     except ModelError as error:
         problems += error.problems
-    if not model.has_clearance:
-        problems.append("joints: a life run needs a clearance joint ([joints.clearance])")
+    if not model.clearance_joints:
+        problems.append("joints: a life run needs a revolute clearance joint ([joints.clearance])")
+    problems += [
+        f"joints.{joint.name}: a life run extrapolates the wear of revolute clearance joints "
+        "only; run a translational joint with clearance with `jointwear run`"
+        for joint in model.slider_joints
+    ]
     if problems:
         raise ModelError(problems)
     folder = Path(out)

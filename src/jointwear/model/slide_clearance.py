@@ -1,0 +1,114 @@
+"""Schema of a translational joint's ``[joints.clearance]`` table (docs/model-format.md).
+
+The joint's first body carries the guide (its centreline through the joint's first point,
+along the joint's ``axis``), the second the slider (a rectangle centred on the joint's second
+point, its length along the axis). The slider's four corners touch the guide's two surfaces;
+a finite guide's ends touch the slider's faces (``kernels.elements.slider``).
+
+Contact stiffness: each corner is a line across the width, rounded to ``corner_radius``, on a
+flat surface. It takes the same power law as the revolute joint, F = K delta^1.5 with
+K = 4/3 E* sqrt(r): the sphere-on-plane Hertz constant with the corner's radius. That is the
+revolute joint's internal-cylinder formula with the bearing's radius taken to infinity, so
+both joints follow one convention. A true line contact's stiffness also depends (weakly,
+logarithmically) on the bodies' sizes, which a corner does not define; give
+``contact_stiffness`` to use a measured or computed one instead.
+"""
+
+from typing import Annotated
+
+from annotated_types import Ge, Le
+from pydantic import model_validator
+
+from ..kernels.laws.normal import ElasticLaw, elastic_force, elastic_stiffness
+from .clearance import HERTZ_EXPONENT, ContactKeys, PositiveLength
+from .tables import Number
+
+LINE_ON_FLAT = 4.0 / 3.0  # K = LINE_ON_FLAT E* sqrt(r) [N/m^1.5]
+
+
+class SlideClearance(ContactKeys):
+    """A translational joint with clearance: slider in guide, contact, friction and wear (SI).
+
+    Material pairs are [guide, slider].
+    """
+
+    slider_length: PositiveLength
+    slider_height: PositiveLength
+    guide_height: PositiveLength | None = None
+    gap: PositiveLength | None = None
+    guide_length: PositiveLength | None = None
+    corner_radius: PositiveLength | None = None
+    slider_wear_share: Annotated[Number, Ge(0), Le(1)] = 0.5
+    segments: Annotated[int, Ge(1), Le(100_000)] = 20
+
+    @model_validator(mode="after")
+    def _consistent(self) -> "SlideClearance":
+        problems = [*self._unused_keys(), *self._law_problems(), *self._slide_problems()]
+        if problems:
+            raise ValueError("; ".join(problems))
+        return self
+
+    def _slide_problems(self) -> list[str]:
+        lines = []
+        if self.normal_law != "hertz":
+            lines.append(
+                f"normal_law '{self.normal_law}' is for a journal in its bearing; a slider's "
+                'corners touch flat surfaces: use normal_law = "hertz"'
+            )
+        if self.lubrication != "none":
+            lines.append(
+                f"lubrication '{self.lubrication}' is a journal bearing's film; a translational "
+                "joint has none: remove lubrication"
+            )
+        if (self.guide_height is None) == (self.gap is None):
+            which = "guide_height or gap" + ("" if self.gap is None else ", not both")
+            lines.append(f"give {which} (the gap is the clearance on each side of the slider)")
+        elif self.gap is None and self.guide_height <= self.slider_height:
+            lines.append(
+                f"guide_height {self.guide_height * 1e3:.12g} mm must be larger than "
+                f"slider_height {self.slider_height * 1e3:.12g} mm (the gap is half their "
+                "difference)"
+            )
+        elif self.contact_tolerance >= self.clearance_gap:
+            lines.append(
+                f"contact_tolerance {self.contact_tolerance:g} m must be much smaller than the "
+                f"gap {self.clearance_gap:g} m (default 1e-10 m)"
+            )
+        if self.normal_law == "hertz":
+            given = (self.corner_radius is not None, self.contact_stiffness is not None)
+            if given == (False, False) and self.exponent == HERTZ_EXPONENT:
+                lines.append(
+                    "give corner_radius (the rounding of the slider's corners and the guide's "
+                    "ends, which sets K = 4/3 E* sqrt(r)) or contact_stiffness [N/m^1.5]"
+                )
+            elif all(given):
+                lines.append(
+                    "give corner_radius or contact_stiffness, not both (contact_stiffness "
+                    "replaces the stiffness corner_radius sets)"
+                )
+        return lines
+
+    @property
+    def clearance_gap(self) -> float:
+        """Clearance c on each side of the slider, (guide height - slider height) / 2 [m]."""
+        if self.gap is not None:
+            return self.gap
+        return 0.5 * (self.guide_height - self.slider_height)
+
+    @property
+    def guide_half_height(self) -> float:
+        """Half-height of the guide, slider_height / 2 + gap [m]."""
+        return 0.5 * self.slider_height + self.clearance_gap
+
+    @property
+    def stiffness(self) -> float:
+        """Hertz constant K of a corner on a flat surface [N/m^exponent] (module docstring)."""
+        if self.contact_stiffness is not None:
+            return self.contact_stiffness
+        return LINE_ON_FLAT * self.contact_modulus * self.corner_radius**0.5
+
+    def elastic_force(self, delta: float) -> tuple[float, float]:
+        """(force [N], stiffness dF/d(delta) [N/m]) of one corner's contact at delta [m]."""
+        args = (delta, self.stiffness, self.exponent, self.contact_modulus,
+                self.clearance_gap, self.width)  # fmt: skip
+        return elastic_force(ElasticLaw.HERTZ, *args), elastic_stiffness(ElasticLaw.HERTZ, *args)
