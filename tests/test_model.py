@@ -281,7 +281,8 @@ def _delete(path: str):
                     }
                 ],
             ),
-            "drivers[0].joint: 'hinge' is revolute; a distance driver needs a translational joint",
+            "drivers[0].joint: 'hinge' is revolute; a distance driver needs an ideal "
+            "translational joint",
         ),
         (
             _set(
@@ -431,7 +432,7 @@ def test_extends_chains_and_takes_the_name_from_the_file(tmp_path):
             {"a.toml": 'extends = "base.toml"\n[solver]\nt_end = 1.0'},
             "a.toml: solver: a file that extends another may only give extends, set, name",
         ),
-        ({"a.toml": '[set.solver]\nt_end = 1.0'}, "a.toml: set: only a file with 'extends'"),
+        ({"a.toml": "[set.solver]\nt_end = 1.0"}, "a.toml: set: only a file with 'extends'"),
         (
             {"a.toml": 'extends = "base.toml"\n[set.bodies.rdo]\nmass = 2.0'},
             "bodies.rdo: no item 'rdo'; names are rod",
