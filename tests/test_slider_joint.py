@@ -449,3 +449,43 @@ def test_vanishing_gap_approaches_the_ideal_slider_crank():
     for wide, narrow in itertools.pairwise(errors):
         assert (narrow < 0.5 * wide).all(), errors
     assert (errors[-1] < [2e-6, 0.1, 5e-3]).all(), errors
+
+
+@pytest.mark.parametrize(
+    ("change", "message"),
+    [
+        ({"gap": None}, "give guide_height or gap (the gap is the clearance on each side"),
+        ({"guide_height": 0.05}, "give guide_height or gap, not both"),
+        ({"gap": None, "guide_height": 0.04}, "guide_height 40 mm must be larger than"),
+        ({"normal_law": "johnson"}, "a slider's corners touch flat surfaces"),
+        ({"lubrication": "short_bearing", "viscosity": 0.1}, "a translational joint has none"),
+        ({"corner_radius": None}, "give corner_radius (the rounding of the slider's corners"),
+        ({"contact_stiffness": 1e9}, "give corner_radius or contact_stiffness, not both"),
+        ({"contact_tolerance": 2e-3}, "must be much smaller than the gap 0.001 m"),
+        ({"segments": 0}, "segments"),
+    ],
+)
+def test_bad_clearance_keys_say_what_is_wrong(change, message):
+    joint = {k: v for k, v in {**clearance(), **change}.items() if v is not None}
+    with pytest.raises(jw.ModelError) as caught:
+        parse_model(block_model(joint, [], t_end=0.01))
+    assert message in str(caught.value)
+    assert "joints[0].clearance" in str(caught.value)
+
+
+def test_distance_driver_cannot_drive_a_clearance_joint():
+    data = block_model(clearance(), [], t_end=0.01)
+    data["drivers"] = [
+        {
+            "name": "push",
+            "type": "distance",
+            "joint": "guide",
+            "function": {"type": "constant_speed", "speed": 1.0},
+        }
+    ]
+    with pytest.raises(
+        jw.ModelError,
+        match="'guide' is translational with clearance; a "
+        "distance driver needs an ideal translational joint",
+    ):
+        parse_model(data)

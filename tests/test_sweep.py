@@ -112,6 +112,8 @@ def test_the_table_holds_each_case_summary(local_sweep):
         joint = summary["clearance_joints"]["coupler_follower"]
         assert joint["radial_clearance_m"] == pytest.approx(values[RADIUS] - 0.0098)
         for key, value in joint.items():
+            if isinstance(value, str):  # the joint's type: the table holds numbers only
+                continue
             if isinstance(value, dict):  # e.g. outside_law_ranges: dotted columns
                 for name, entry in value.items():
                     for leaf, number in entry.items():

@@ -343,7 +343,9 @@ def _is_number(value: object) -> bool:
 
 
 def _headline_columns(table: pd.DataFrame, models: Mapping[str, Model]) -> list[str]:
-    joints = {j.name for model in models.values() for j in model.clearance_joints}
+    joints = {
+        j.name for model in models.values() for j in (*model.clearance_joints, *model.slider_joints)
+    }
     return [c for c in table.columns if c.partition(".")[0] in joints and c not in FIXED_COLUMNS]
 
 
