@@ -15,7 +15,7 @@ import math
 
 import numpy as np
 import pytest
-from runs import disc
+from runs import EXAMPLES, disc
 from scipy.integrate import solve_ivp
 
 import jointwear as jw
@@ -489,3 +489,44 @@ def test_distance_driver_cannot_drive_a_clearance_joint():
         "distance driver needs an ideal translational joint",
     ):
         parse_model(data)
+
+
+def test_both_kinds_in_one_model_share_the_tables_and_restart():
+    # The slider-crank with a clearance at the wrist pin gets one in its guide as well: the wear
+    # and impact tables hold both kinds' rows (each leaving the other kind's columns empty),
+    # the degrees of freedom count both, and a run that starts from the first one's final
+    # state carries its worn surfaces on.
+    keys = {
+        "slider_length": 0.04,
+        "slider_height": 0.02,
+        "gap": 1e-4,
+        "width": 0.02,
+        "youngs_modulus": 207e9,
+        "poisson_ratio": 0.3,
+        "corner_radius": 1e-3,
+        "restitution_coefficient": 0.9,
+        "friction_coefficient": 0.01,
+        "wear_coefficient": 8e-14,
+    }
+    sets = [f"joints.slider_guide.clearance.{key}={value}" for key, value in keys.items()]
+    model = jw.load_model(EXAMPLES / "slider_crank_clearance.toml", ["solver.t_end=0.012", *sets])
+    first = jw.simulate(model)
+    assert first.status == "success", first.message
+    assert first.summary["stats"]["degrees_of_freedom"] == 0 + 2 + 2  # driven: 0 without
+    wear = first.wear.groupby("joint")
+    assert wear.size().to_dict() == {"rod_slider": 72, "slider_guide": 40}
+    assert wear.get_group("rod_slider")["position_m"].isna().all()
+    assert wear.get_group("slider_guide")["angle_deg"].isna().all()
+    impacts = first.impacts.groupby("joint")
+    assert impacts.get_group("rod_slider")["contact"].isna().all()
+    assert impacts.get_group("slider_guide")["contact"].isin(CORNERS).all()
+    assert set(first.impacts["joint"]) == {"rod_slider", "slider_guide"}
+    second = jw.simulate(model, initial=first.final)
+    assert second.status == "success", second.message
+    assert (second.final.slider_wear >= first.final.slider_wear).all()
+    added = second.final.slider_wear.sum() - first.final.slider_wear.sum()
+    mapped = (
+        second.wear[second.wear["joint"] == "slider_guide"]["depth_m"].sum()
+        - first.wear[first.wear["joint"] == "slider_guide"]["depth_m"].sum()
+    )
+    assert added > 0.0 and mapped == pytest.approx(added, rel=1e-12)
