@@ -274,6 +274,31 @@ def test_mechanism_that_cannot_be_assembled_names_the_joints(tmp_path, command):
 # check ------------------------------------------------------------------------------------
 
 
+def test_check_prints_the_layout_of_a_translational_clearance_joint():
+    # The piston example: gap 1 mm, guide 52 mm high and 440 mm long, steel corners of 1 mm
+    # radius: K = 4/3 E* sqrt(r), E* = E / (2 (1 - nu^2)) = 113.736 GPa, K = 4.79554e9.
+    result = invoke("check", EXAMPLES / "slider_crank_piston_clearance.toml",
+                    env={"COLUMNS": "200"})  # fmt: skip
+    assert result.exit_code == 0, result.output
+    text = result.stdout
+    assert "degrees of freedom: 3 (joints only), 3 with drivers, of which 2 from clearance" in text
+    assert "translational clearance joint 'piston'" in text
+    rows = {}
+    for line in text.splitlines():
+        cells = [c.strip() for c in line.split("│")[1:-1]]
+        if len(cells) == 3:
+            rows.setdefault(cells[0], cells[1])
+    assert float(rows["gap on each side c"]) == 1.0
+    assert float(rows["guide (on 'ground'): height"]) == 52.0
+    assert float(rows["length"]) == 440.0
+    assert rows["contacts"] == "4 corners + 4 guide ends"
+    e_star = 207e9 / (2 * (1 - 0.3**2))
+    stiffness = 4 / 3 * e_star * math.sqrt(1e-3)
+    assert float(rows["contact stiffness K (n = 1.5)"]) == pytest.approx(stiffness, rel=1e-5)
+    force = stiffness * (0.1e-3) ** 1.5  # at 10 % of the gap [N]
+    assert float(rows["force F at delta = 10% of c"]) == pytest.approx(force / 1e3, rel=1e-5)
+
+
 def test_check_fourbar_prints_dof_and_initial_pose():
     result = invoke("check", FOURBAR, env={"COLUMNS": "200"})
     assert result.exit_code == 0, result.output
