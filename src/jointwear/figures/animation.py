@@ -1,31 +1,40 @@
 """Animation of a mechanism from its results: bodies, ground points and clearance joints.
 
 Each body is drawn as a thick line through its points (closed for three or more), ground
-points as triangles, and each clearance joint as a bearing circle and a journal circle whose
-offset from the bearing centre is magnified, so that the motion inside the joint shows (the
-paper's Fig. 6 does the same with an exaggerated clearance).
+points as triangles, and each revolute clearance joint as a bearing circle and a journal
+circle whose offset from the bearing centre is magnified, so that the motion inside the joint
+shows (the paper's Fig. 6 does the same with an exaggerated clearance). Each translational
+clearance joint is drawn as its guide's two surfaces and the slider as a rectangle, the gap,
+the slider's lateral offset and its tilt magnified by the same factor (the tilt as an angle,
+so the corners meet the drawn surfaces about when they meet the true ones, for small
+angles); the slider's body, and the points of bodies pinned to it by ideal revolute joints,
+follow the drawn slider.
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from io import BytesIO
 from pathlib import Path
+from typing import NamedTuple
 
 import numpy as np
 import pandas as pd
 from matplotlib.animation import AbstractMovieWriter, FuncAnimation
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure  # figures without pyplot: no global backend switch
-from matplotlib.patches import Circle
+from matplotlib.patches import Circle, Rectangle
 from PIL import Image
 
 from ..model import Model
+from ..model.sections import RevoluteJoint, TranslationalJoint
 from ..results import Results
 from .run import crank_driver
+from .slider import crank_body
 
 NO_CRANK_SPAN = 0.04  # [s] the time animated when no constant-speed driver turns a crank
-CLEARANCE_SHARE = 0.04  # default: a radial clearance is drawn as this share of the mechanism
+CLEARANCE_SHARE = 0.04  # default: a radial clearance or a gap drawn as this share of the mechanism
 
 
 class _GifWriter(AbstractMovieWriter):
@@ -51,11 +60,20 @@ class _GifWriter(AbstractMovieWriter):
 
 
 def _frames(results: Results, turns: float, frames: int) -> pd.DataFrame:
-    """Rows of the last ``turns`` crank turns (or ``NO_CRANK_SPAN``), ``frames`` of them at most."""
+    """Rows of the last ``turns`` crank turns (or ``NO_CRANK_SPAN``), ``frames`` of them at most.
+
+    The crank: a constant-speed driver's body, else a free crank (``slider.crank_body``).
+    """
     df = results.timeseries
     crank = crank_driver(results)
-    span = turns * 2.0 * math.pi / abs(crank[2]) if crank else NO_CRANK_SPAN
-    window = df[df["time"] >= df["time"].iloc[-1] - span * (1.0 + 1e-9)]
+    free = crank_body(results) if crank is None else None
+    if free is not None:
+        phi = df[f"phi_{free}"].to_numpy()
+        before = np.flatnonzero(np.abs(phi - phi[-1]) > turns * 2.0 * math.pi * (1.0 + 1e-9))
+        window = df.iloc[before[-1] + 1 if len(before) else 0 :]
+    else:
+        span = turns * 2.0 * math.pi / abs(crank[2]) if crank else NO_CRANK_SPAN
+        window = df[df["time"] >= df["time"].iloc[-1] - span * (1.0 + 1e-9)]
     rows = np.unique(np.linspace(0, len(window) - 1, min(frames, len(window))).round())
     return window.iloc[rows.astype(int)]
 
@@ -85,34 +103,128 @@ def _outlines(model: Model, rows: pd.DataFrame, moved: dict) -> dict[str, np.nda
     return outlines
 
 
+def _angle(rows: pd.DataFrame, body: str) -> np.ndarray:
+    """Angle [rad] of ``body`` over ``rows`` (0 for the ground)."""
+    return np.zeros(len(rows)) if body == "ground" else rows[f"phi_{body}"].to_numpy()
+
+
+def _scale(model: Model, rows: pd.DataFrame, clearance_scale: float | None) -> float:
+    """Magnification of the clearances [-]: ``clearance_scale`` if given.
+
+    By default the factor that draws the largest radial clearance or gap as
+    ``CLEARANCE_SHARE`` of the mechanism's size (1 without clearance joints).
+    """
+    if clearance_scale is not None:
+        return clearance_scale
+    gaps = [j.clearance.radial_clearance for j in model.clearance_joints]
+    gaps += [j.clearance.clearance_gap for j in model.slider_joints]
+    if not gaps:
+        return 1.0
+    points = np.concatenate([o.reshape(-1, 2) for o in _outlines(model, rows, {}).values()])
+    return CLEARANCE_SHARE * max(np.ptp(points, axis=0)) / max(gaps)
+
+
+class SliderPose(NamedTuple):
+    """A translational clearance joint as drawn over the frames (gap, offset, tilt magnified)."""
+
+    centre: np.ndarray  # (frames, 2) slider's drawn centre [m]
+    angle: np.ndarray  # (frames,) slider axis' drawn angle from the global x axis [rad]
+    guide: np.ndarray  # (frames, 2 surfaces, 2 ends, 2) guide surfaces' drawn ends [m]
+    corners: np.ndarray  # (frames, 4, 2) slider rectangle's drawn corners [m]
+
+
+def _slider_pose(
+    model: Model, rows: pd.DataFrame, joint: TranslationalJoint, scale: float
+) -> tuple[SliderPose, dict]:
+    """The drawn slider and guide of ``joint``, and the drawn tracks of the slider body's points.
+
+    The slider's centre lies at its true position along the guide and ``scale`` times its
+    lateral offset off the centreline; its axis at ``scale`` times its tilt to the guide's. The
+    guide's surfaces lie ``b + scale c`` off its centreline, over its length, or if unbounded
+    over the slider's travel in ``rows``. Returns the pose and {(body, point): track}.
+    """
+    guide, slider = joint.bodies
+    c = joint.clearance
+    a, b = 0.5 * c.slider_length, 0.5 * c.slider_height
+    g = _track(model, rows, guide, joint.points[0])
+    axis = np.asarray(joint.axis, dtype=float)
+    theta = _angle(rows, guide) + math.atan2(axis[1], axis[0])  # guide axis, global
+    u = np.column_stack([np.cos(theta), np.sin(theta)])
+    v = np.column_stack([-u[:, 1], u[:, 0]])
+    along = np.einsum("ij,ij->i", _track(model, rows, slider, joint.points[1]) - g, u)
+    lateral = rows[f"{joint.name}_lateral"].to_numpy()
+    tilt = rows[f"{joint.name}_tilt"].to_numpy()
+    centre = g + along[:, None] * u + scale * lateral[:, None] * v
+    angle = theta + scale * tilt
+    if c.guide_length:
+        ends = np.array([-0.5, 0.5]) * c.guide_length
+    else:
+        ends = np.array([along.min() - a, along.max() + a])
+    h = b + scale * c.clearance_gap
+    guide_ends = np.stack(
+        [np.stack([g + e * u + side * h * v for e in ends], axis=1) for side in (1.0, -1.0)],
+        axis=1,
+    )
+    cos, sin = np.cos(angle)[:, None], np.sin(angle)[:, None]
+    corner = np.array([(-a, -b), (a, -b), (a, b), (-a, b)])
+    corners = np.stack(
+        [centre[:, 0:1] + cos * corner[:, 0] - sin * corner[:, 1],
+         centre[:, 1:2] + sin * corner[:, 0] + cos * corner[:, 1]], axis=2,
+    )  # fmt: skip
+    # The slider body as drawn: turned by (scale - 1) tilt about its centre, moved with it.
+    centre_local = np.asarray(model.point(slider, joint.points[1]), dtype=float)
+    phi = _angle(rows, slider) + (scale - 1.0) * tilt
+    moved = {}
+    for name, local in model.body(slider).points.items():
+        dx, dy = np.asarray(local, dtype=float) - centre_local
+        moved[(slider, name)] = centre + np.column_stack(
+            [np.cos(phi) * dx - np.sin(phi) * dy, np.sin(phi) * dx + np.cos(phi) * dy]
+        )
+    return SliderPose(centre, angle, guide_ends, corners), moved
+
+
+def _pinned(model: Model, moved: dict) -> dict:
+    """Points of other bodies pinned by ideal revolute joints to a moved point: moved alike."""
+    pinned = {}
+    for joint in model.joints:
+        if not isinstance(joint, RevoluteJoint) or joint.clearance is not None:
+            continue
+        ends = list(zip(joint.bodies, joint.points, strict=True))
+        for here, there in (ends, ends[::-1]):
+            if here in moved and there not in moved and there[0] != "ground":
+                pinned[there] = moved[here]
+    return pinned
+
+
 def _positions(
     results: Results, rows: pd.DataFrame, clearance_scale: float | None
-) -> tuple[dict, dict, dict, float]:
-    """Drawn positions over ``rows``: body outlines, bearing and journal centres [m], scale.
+) -> tuple[dict, dict, dict, dict, float]:
+    """Drawn positions over ``rows``: outlines, bearing and journal centres [m], sliders, scale.
 
-    A journal centre is drawn at the bearing centre plus ``clearance_scale`` times its
-    offset; its body's outline goes through it.
+    A journal centre is drawn at the bearing centre plus ``scale`` times its offset; its
+    body's outline goes through it. Sliders: ``_slider_pose``.
     """
     model = results.model
     joints = model.clearance_joints
+    scale = _scale(model, rows, clearance_scale)
     bearings = {j.name: _track(model, rows, j.bodies[0], j.points[0]) for j in joints}
-    if clearance_scale is None and joints:
-        points = np.concatenate([o.reshape(-1, 2) for o in _outlines(model, rows, {}).values()])
-        size = max(np.ptp(points, axis=0))
-        clearance_scale = CLEARANCE_SHARE * size / max(j.clearance.radial_clearance for j in joints)
     journals = {
-        j.name: bearings[j.name]
-        + clearance_scale * rows[[f"{j.name}_ex", f"{j.name}_ey"]].to_numpy()
+        j.name: bearings[j.name] + scale * rows[[f"{j.name}_ex", f"{j.name}_ey"]].to_numpy()
         for j in joints
     }
-    moved = {(j.bodies[1], j.points[1]): journals[j.name] for j in joints}
-    return _outlines(model, rows, moved), bearings, journals, clearance_scale
+    sliders, moved = {}, {}
+    for joint in model.slider_joints:
+        sliders[joint.name], points = _slider_pose(model, rows, joint, scale)
+        moved |= points
+    moved |= _pinned(model, moved)
+    moved |= {(j.bodies[1], j.points[1]): journals[j.name] for j in joints}
+    return _outlines(model, rows, moved), bearings, journals, sliders, scale
 
 
-def _stage(model: Model, outlines: dict[str, np.ndarray]) -> tuple[Figure, Axes]:
-    """Figure and axes that hold every drawn position, with the ground points as triangles."""
+def _stage(model: Model, points: np.ndarray) -> tuple[Figure, Axes]:
+    """Figure and axes that hold the drawn ``points`` (n, 2) and the ground points (triangles)."""
     ground = np.array(list(model.ground.points.values())).reshape(-1, 2)
-    points = np.concatenate([ground, *(o.reshape(-1, 2) for o in outlines.values())])
+    points = np.concatenate([ground, points])
     low, high = points.min(axis=0), points.max(axis=0)
     margin = 0.08 * max(high - low)
     fig = Figure(figsize=(6.4, 6.0), dpi=100)  # fixed margins: a layout engine redraws each frame
@@ -129,26 +241,29 @@ def _stage(model: Model, outlines: dict[str, np.ndarray]) -> tuple[Figure, Axes]
     return fig, ax
 
 
-def save_animation(
+class Scene(NamedTuple):
+    """The animation's figure, its ``draw(frame)``, the frames' times [s], the magnification."""
+
+    figure: Figure
+    draw: Callable[[int], None]
+    times: np.ndarray
+    scale: float
+
+
+def mechanism_scene(
     results: Results,
-    path: str | Path,
     *,
     turns: float = 1.0,
-    fps: int = 25,
     frames: int = 80,
     clearance_scale: float | None = None,
-) -> Path:
-    """Write a GIF of the mechanism over the last ``turns`` crank turns; return its path.
-
-    Without a crank, the last ``NO_CRANK_SPAN`` seconds. ``frames``: at most this many,
-    evenly spaced in time. ``clearance_scale`` [-]: factor on each journal's offset from its
-    bearing centre (bearing circles grow to match); by default the largest radial clearance
-    shows as ``CLEARANCE_SHARE`` of the mechanism's size.
-    """
+) -> Scene:
+    """The figure of ``save_animation`` and the function that draws its frames (same keys)."""
     model = results.model
     rows = _frames(results, turns, frames)
-    outlines, bearings, journals, scale = _positions(results, rows, clearance_scale)
-    fig, ax = _stage(model, outlines)
+    outlines, bearings, journals, sliders, scale = _positions(results, rows, clearance_scale)
+    drawn = [o.reshape(-1, 2) for o in outlines.values()]
+    drawn += [p.reshape(-1, 2) for s in sliders.values() for p in (s.guide, s.corners)]
+    fig, ax = _stage(model, np.concatenate(drawn))
     lines = {
         name: ax.plot([], [], "-o", lw=5, ms=5, solid_capstyle="round", label=name, zorder=2)[0]
         for name in outlines
@@ -161,13 +276,31 @@ def save_animation(
             ax.add_patch(Circle((0, 0), bearing_radius, fill=False, lw=1.5, ec="k", zorder=3)),
             ax.add_patch(Circle((0, 0), c.journal_radius, fc="w", lw=1.5, ec="tab:red", zorder=4)),
         )
+    guides, blocks = {}, {}
+    for name in sliders:
+        c = model.joint(name).clearance
+        guides[name] = [ax.plot([], [], "k-", lw=1.5, zorder=3)[0] for _ in range(2)]
+        blocks[name] = ax.add_patch(
+            Rectangle(
+                (0, 0), c.slider_length, c.slider_height, rotation_point="center",
+                fc="mistyrose", ec="tab:red", lw=1.5, alpha=0.8, zorder=1.5,
+            )
+        )  # fmt: skip
+    titles = []
     if circles:
         c_mm = max(model.joint(name).clearance.radial_clearance for name in circles) * 1e3
-        ax.set_title(
+        titles.append(
             f"clearance joints: journal offset × {scale:.3g} "
-            f"(c = {c_mm:.3g} mm drawn as {c_mm * scale:.3g} mm)",
-            fontsize="small",
+            f"(c = {c_mm:.3g} mm drawn as {c_mm * scale:.3g} mm)"
         )
+    if sliders:
+        gap_mm = max(model.joint(name).clearance.clearance_gap for name in sliders) * 1e3
+        titles.append(
+            f"sliders: gap, offset and tilt × {scale:.3g} "
+            f"(gap {gap_mm:.3g} mm drawn as {gap_mm * scale:.3g} mm)"
+        )
+    if titles:
+        ax.set_title("\n".join(titles), fontsize="small")
     ax.legend(loc="upper right", fontsize="small")
     clock = ax.text(0.02, 0.97, "", transform=ax.transAxes, va="top")
     times = rows["time"].to_numpy()
@@ -178,9 +311,39 @@ def save_animation(
         for name, (bearing, journal) in circles.items():
             bearing.set_center(bearings[name][frame])
             journal.set_center(journals[name][frame])
+        for name, pose in sliders.items():
+            for surface, line in enumerate(guides[name]):
+                line.set_data(pose.guide[frame, surface, :, 0], pose.guide[frame, surface, :, 1])
+            block = blocks[name]
+            half = 0.5 * np.array([block.get_width(), block.get_height()])
+            block.set_xy(pose.centre[frame] - half)
+            block.set_angle(math.degrees(pose.angle[frame]))
         clock.set_text(f"t = {times[frame]:.4f} s")
 
+    return Scene(fig, draw, times, scale)
+
+
+def save_animation(
+    results: Results,
+    path: str | Path,
+    *,
+    turns: float = 1.0,
+    fps: int = 25,
+    frames: int = 80,
+    clearance_scale: float | None = None,
+) -> Path:
+    """Write a GIF of the mechanism over the last ``turns`` crank turns; return its path.
+
+    Without a crank (a constant-speed driver's body or a free crank, ``slider.crank_body``),
+    the last ``NO_CRANK_SPAN`` seconds. ``frames``: at most this many, evenly spaced in time.
+    ``clearance_scale`` [-]: factor on each journal's offset from its bearing centre (bearing
+    circles grow to match) and on each slider's gap, lateral offset and tilt; by default the
+    largest radial clearance or gap shows as ``CLEARANCE_SHARE`` of the mechanism's size.
+    """
+    scene = mechanism_scene(results, turns=turns, frames=frames, clearance_scale=clearance_scale)
     out = Path(path)
     out.parent.mkdir(parents=True, exist_ok=True)
-    FuncAnimation(fig, draw, frames=len(rows)).save(out, writer=_GifWriter(fps=fps))
+    FuncAnimation(scene.figure, scene.draw, frames=len(scene.times)).save(
+        out, writer=_GifWriter(fps=fps)
+    )
     return out

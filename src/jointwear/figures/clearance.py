@@ -1,4 +1,4 @@
-"""Figures of the clearance joints: P. Flores, Mech. Mach. Theory 44 (2009), section 6.
+"""Figures of the revolute clearance joints: P. Flores, Mech. Mach. Theory 44 (2009), section 6.
 
 Functions ``Results -> matplotlib Figure``, one per figure of the paper (Figs. 7-10), and
 ``save_clearance_figures`` that writes them all. Angles on a joint surface are measured
@@ -37,7 +37,16 @@ MM = 1e3  # [mm/m]
 
 
 def _clearance_joints(results: Results) -> tuple[RevoluteJoint, ...]:
+    """The revolute clearance joints (translational ones have figures of their own: slider.py)."""
     return results.model.clearance_joints
+
+
+def _require_joints(results: Results) -> tuple[RevoluteJoint, ...]:
+    """The revolute clearance joints; ValueError if there are none to draw."""
+    joints = _clearance_joints(results)
+    if not joints:
+        raise ValueError(f"model '{results.model.name}' has no revolute clearance joints")
+    return joints
 
 
 def _surface_body(joint: RevoluteJoint, surface: str) -> str:
@@ -83,12 +92,14 @@ def _window(results: Results, turns: float) -> tuple[pd.DataFrame, float, float]
 def _dynamics_panels(results: Results) -> list[tuple[str, str, str]]:
     """(column, title, y label) of Fig. 7 (a)-(c): output body, then the driver if any.
 
-    The output body is the model's last body; its x motion if it does not rotate. The driver
-    is the crank, else the first driver.
+    The output body is the model's last body; its x motion if it does not rotate or is the
+    slider of a translational clearance joint (which only tilts). The driver is the crank,
+    else the first driver.
     """
     body = results.model.bodies[-1].name
     phi = results.timeseries[f"phi_{body}"]
-    if phi.max() - phi.min() >= STILL_ANGLE:
+    slides = any(joint.bodies[1] == body for joint in results.model.slider_joints)
+    if phi.max() - phi.min() >= STILL_ANGLE and not slides:
         panels = [
             (f"omega_{body}", f"{body} angular velocity", "angular velocity [rad/s]"),
             (f"alpha_{body}", f"{body} angular acceleration", "angular acceleration [rad/s²]"),
@@ -153,7 +164,7 @@ def plot_orbit(results: Results) -> Figure:
     One panel per clearance joint, with the clearance circle of radius c; the whole run
     thin and light, the last two crank turns dark.
     """
-    joints = _clearance_joints(results)
+    joints = _require_joints(results)
     fig = Figure(figsize=(5.5 * len(joints), 5.8), layout="constrained")
     axes = fig.subplots(1, len(joints), squeeze=False)[0]
     last, _, speed = _window(results, 2.0)
@@ -215,7 +226,7 @@ def plot_wear_sectors(results: Results) -> Figure:
 
     One row per clearance joint, journal on the left, bearing on the right.
     """
-    joints = _clearance_joints(results)
+    joints = _require_joints(results)
     profiles = _profiles_over_time(results)
     colors = colormaps["viridis"](np.linspace(0.85, 0.0, len(profiles)))
     fig = Figure(figsize=(11.0, 3.8 * len(joints) + 0.5), layout="constrained")
@@ -242,7 +253,7 @@ def plot_wear_sectors(results: Results) -> Figure:
 
 def plot_wear_polar(results: Results) -> Figure:
     """Final wear depth per sector [µm] in polar form, journal and bearing: paper Fig. 9."""
-    joints = _clearance_joints(results)
+    joints = _require_joints(results)
     fig = Figure(figsize=(10.0, 5.0 * len(joints) + 0.5), layout="constrained")
     t_end = float(results.timeseries["time"].iloc[-1])
     for k, joint in enumerate(joints):
@@ -294,7 +305,7 @@ def plot_wear_profile(results: Results) -> Figure:
     depths interpolated linearly and periodically between sector centres, as the contact
     model does, and ``s`` from ``wear_exaggeration``. Drawn in each surface's body frame.
     """
-    joints = _clearance_joints(results)
+    joints = _require_joints(results)
     fig = Figure(figsize=(10.0, 5.2 * len(joints) + 0.5), layout="constrained")
     axes = fig.subplots(len(joints), 2, squeeze=False)
     for row, joint in zip(axes, joints, strict=True):

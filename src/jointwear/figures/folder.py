@@ -8,9 +8,16 @@ from ..results import Results
 from .animation import save_animation
 from .clearance import CLEARANCE_FIGURES, save_clearance_figures
 from .run import crank_driver, plot_cycle, plot_energy
+from .slider import SLIDER_FIGURES, save_slider_figures
 
 ANIMATION = "mechanism.gif"
-ALL_FIGURES = {"energy.png", "cycle.png", *(f"{n}.png" for n in CLEARANCE_FIGURES), ANIMATION}
+ALL_FIGURES = {
+    "energy.png",
+    "cycle.png",
+    *(f"{n}.png" for n in CLEARANCE_FIGURES),
+    *(f"{n}.png" for n in SLIDER_FIGURES),
+    ANIMATION,
+}
 
 
 def save_figures(
@@ -18,8 +25,9 @@ def save_figures(
 ) -> list[Path]:
     """Draw every figure that applies to ``results`` into ``folder``; return the paths.
 
-    PNGs of the energy and, with a crank, of one turn; with clearance joints the paper's
-    Fig. 7-10 (``ideal``: the same mechanism with ideal joints, for Fig. 7); and, unless
+    PNGs of the energy and, with a crank, of one turn; with revolute clearance joints the
+    paper's Fig. 7-10 (``ideal``: the same mechanism with ideal joints, for Fig. 7); with
+    translational clearance joints the slider's motion, corner forces and wear; and, unless
     ``animation`` is false, a GIF of the mechanism (an existing GIF is then kept). Figures of
     ours that do not apply to these results are removed.
     """
@@ -33,6 +41,7 @@ def save_figures(
         draw(results).savefig(path / f"{name}.png", dpi=150)
         written.append(path / f"{name}.png")
     written += save_clearance_figures(results, path, ideal)
+    written += save_slider_figures(results, path)
     if animation:
         written.append(save_animation(results, path / ANIMATION))
     kept = {p.name for p in written} | (set() if animation else {ANIMATION})

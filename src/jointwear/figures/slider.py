@@ -1,0 +1,299 @@
+"""Figures of the translational clearance joints: a slider in a guide with a gap.
+
+Functions ``Results -> matplotlib Figure`` and ``save_slider_figures`` that writes them all.
+As in the time series (``results.slider``): the lateral offset is the slider centre's from
+the guide's centreline along the guide's normal, the tilt the slider's angle relative to the
+guide's from the initial pose; "front" is the guide's +axis side, "top" its +normal side.
+Wear positions run along each surface from its middle, in its body's frame.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from typing import NamedTuple
+
+import numpy as np
+import pandas as pd
+from matplotlib.axes import Axes
+from matplotlib.figure import Figure  # figures without pyplot: no global backend switch
+from matplotlib.ticker import MultipleLocator
+
+from ..model.sections import RevoluteJoint, TranslationalJoint
+from ..model.slide_clearance import SlideClearance
+from ..results import Results
+from ..results.clearance import UM
+from .run import crank_driver
+
+SLIDER_FIGURES = (
+    "slider_motion",
+    "slider_corner_forces",
+    "slider_wear",
+)  # the file names (.png) save_slider_figures writes
+MM = 1e3  # [mm/m]
+MRAD = 1e3  # [mrad/rad]
+TURN = 360.0  # [deg]
+MAX_TURN_TICKS = 8  # more crank turns than this: a tick every few turns
+NEAR_LIMIT = 0.25  # the tilt limits are drawn when the tilt comes within this share of them
+# The corner panels as the slider is seen with its guide's axis to the right.
+CORNER_GRID = (("rear_top", "front_top"), ("rear_bottom", "front_bottom"))
+CORNER_COLOR = "tab:blue"
+EDGE_COLOR = "tab:red"
+SURFACE_COLORS = {"top": "tab:blue", "bottom": "tab:orange"}
+SNAPSHOT_ALPHA = 0.35
+
+
+class Abscissa(NamedTuple):
+    """The x axis of the time plots: the crank angle turned [deg], or time [s]."""
+
+    values: np.ndarray  # one per time-series row
+    label: str
+    crank: str | None  # the crank body, None when against time
+
+
+def crank_body(results: Results) -> str | None:
+    """The crank body, or None.
+
+    The body a constant-speed driver turns, else the first body joined to the ground by a
+    revolute joint whose angle spans more than one turn in the run.
+    """
+    crank = crank_driver(results)
+    if crank is not None:
+        return crank[1]
+    df = results.timeseries
+    for joint in results.model.joints:
+        if isinstance(joint, RevoluteJoint) and "ground" in joint.bodies:
+            body = joint.bodies[1] if joint.bodies[0] == "ground" else joint.bodies[0]
+            phi = df[f"phi_{body}"]
+            if phi.max() - phi.min() > 2.0 * math.pi:
+                return body
+    return None
+
+
+def crank_abscissa(results: Results) -> Abscissa:
+    """The crank angle turned since the run's start [deg] (positive either way), or time [s]."""
+    df = results.timeseries
+    body = crank_body(results)
+    if body is None:
+        return Abscissa(df["time"].to_numpy(), "time [s]", None)
+    phi = df[f"phi_{body}"].to_numpy()
+    turned = np.degrees(phi - phi[0])
+    if turned[-1] < 0.0:
+        turned = -turned
+    label = f"{body} angle turned since t = {df['time'].iloc[0]:.4g} s [deg]"
+    return Abscissa(turned, label, body)
+
+
+def _set_abscissa(ax: Axes, x: Abscissa) -> None:
+    """Label the bottom x axis; crank angle ticks every turn (or every few), minor every 90°."""
+    ax.set_xlabel(x.label)
+    if x.crank is None:
+        return
+    turns = max(float(np.max(x.values)) / TURN, 1.0)
+    step = TURN * math.ceil(turns / MAX_TURN_TICKS)
+    ax.xaxis.set_major_locator(MultipleLocator(step))
+    if step == TURN:
+        ax.xaxis.set_minor_locator(MultipleLocator(TURN / 4.0))
+
+
+def _joints(results: Results) -> tuple[TranslationalJoint, ...]:
+    joints = results.model.slider_joints
+    if not joints:
+        raise ValueError(f"model '{results.model.name}' has no translational clearance joints")
+    return joints
+
+
+def tilt_limit(clearance: SlideClearance) -> float:
+    """Tilt [rad] at which two opposite corners touch both guide surfaces, slider centred.
+
+    Rigid slider with sharp corners, no wear: a sin(t) + b cos(t) = b + c with a, b the
+    slider's half-length and half-height and c the gap, so
+    t = asin((b + c) / sqrt(a^2 + b^2)) - atan(b / a), about 2 c / L for a small gap.
+    """
+    a, b = 0.5 * clearance.slider_length, 0.5 * clearance.slider_height
+    reach = min(clearance.guide_half_height / math.hypot(a, b), 1.0)
+    return math.asin(reach) - math.atan2(b, a)
+
+
+def plot_slider_motion(results: Results) -> Figure:
+    """Each slider's lateral offset [mm] and tilt [mrad] against the crank angle [deg].
+
+    Against time [s] without a crank (``crank_abscissa``). Dashed: the gap ±c (a level
+    slider on a guide surface) and, when the tilt comes within ``NEAR_LIMIT`` of it, the
+    tilt limit ±``tilt_limit`` (two opposite corners touching; else its value is noted).
+    """
+    joints = _joints(results)
+    df = results.timeseries
+    x = crank_abscissa(results)
+    fig = Figure(figsize=(8.0, 4.6 * len(joints) + 0.6), layout="constrained")
+    axes = fig.subplots(2 * len(joints), 1, sharex=True, squeeze=False)[:, 0]
+    for k, joint in enumerate(joints):
+        lateral, tilt = axes[2 * k], axes[2 * k + 1]
+        guide, slider = joint.bodies
+        gap = joint.clearance.clearance_gap * MM
+        lateral.plot(x.values, df[f"{joint.name}_lateral"].to_numpy() * MM, lw=0.9)
+        for sign in (1.0, -1.0):
+            label = f"gap ±c = ±{gap:.3g} mm" if sign > 0 else None
+            lateral.axhline(sign * gap, ls="--", color="k", lw=0.8, label=label)
+        lateral.set_ylabel("lateral offset [mm]")
+        lateral.set_title(
+            f"{joint.name}: slider ({slider}) centre from the guide ({guide}) centreline",
+            loc="left",
+            fontsize="medium",
+        )
+        lateral.legend(loc="upper right", fontsize="small")
+        angle = df[f"{joint.name}_tilt"].to_numpy() * MRAD
+        tilt.plot(x.values, angle, lw=0.9, color="tab:purple")
+        limit = tilt_limit(joint.clearance) * MRAD
+        if np.max(np.abs(angle), initial=0.0) >= NEAR_LIMIT * limit:
+            for sign in (1.0, -1.0):
+                label = f"opposite corners touch: ±{limit:.3g} mrad" if sign > 0 else None
+                tilt.axhline(sign * limit, ls="--", color="k", lw=0.8, label=label)
+            tilt.legend(loc="upper right", fontsize="small")
+        else:
+            tilt.text(
+                0.99,
+                0.95,
+                f"opposite corners touch at ±{limit:.3g} mrad (off scale)",
+                transform=tilt.transAxes,
+                ha="right",
+                va="top",
+                fontsize="small",
+                color="0.3",
+            )
+        tilt.set_ylabel("tilt [mrad]")
+        tilt.set_title(f"{joint.name}: slider tilt in the guide", loc="left", fontsize="medium")
+    for ax in axes:
+        ax.axhline(0.0, color="0.6", lw=0.6)
+        ax.grid(alpha=0.3)
+    _set_abscissa(axes[-1], x)
+    fig.suptitle(f"{results.model.name}: slider motion in the guide")
+    return fig
+
+
+def plot_corner_forces(results: Results) -> Figure:
+    """Normal force [N] at each slider corner against the crank angle [deg] (or time [s]).
+
+    Per joint a 2 x 2 grid as the slider is seen with its guide's axis to the right (top
+    corners above, front on the right); a finite guide's end edge that pushed on the slider's
+    face near a corner is drawn in that corner's panel.
+
+    The titles give the largest force among the time-series rows (the summary's maximum is
+    over every step, so it can be larger).
+    """
+    joints = _joints(results)
+    df = results.timeseries
+    x = crank_abscissa(results)
+    fig = Figure(figsize=(10.0, 4.8 * len(joints) + 0.6), layout="constrained")
+    axes = fig.subplots(2 * len(joints), 2, sharex=True, sharey=True, squeeze=False)
+    for k, joint in enumerate(joints):
+        for r, row in enumerate(CORNER_GRID):
+            for ax, corner in zip(axes[2 * k + r], row, strict=True):
+                force = df[f"{joint.name}_fn_{corner}"].to_numpy()
+                ax.plot(x.values, force, lw=0.9, color=CORNER_COLOR, label=f"corner {corner}")
+                peak = np.max(force, initial=0.0)
+                title = f"{joint.name}: {corner} corner (largest row {peak:.4g} N)"
+                edge = df.get(f"{joint.name}_fn_edge_{corner}")
+                if edge is not None and edge.to_numpy().any():
+                    ax.plot(
+                        x.values, edge.to_numpy(), lw=0.9, color=EDGE_COLOR,
+                        label=f"guide edge {corner}",
+                    )  # fmt: skip
+                    ax.legend(loc="upper right", fontsize="small")
+                ax.set_title(title, loc="left", fontsize="medium")
+                ax.grid(alpha=0.3)
+            axes[2 * k + r, 0].set_ylabel("normal force [N]")
+    for ax in axes[-1]:
+        _set_abscissa(ax, x)
+    fig.suptitle(f"{results.model.name}: normal contact forces on the slider")
+    return fig
+
+
+def _depths(table: pd.DataFrame, joint: str, surface: str) -> tuple[np.ndarray, np.ndarray]:
+    """(segment centres [m], wear depths [m]) of one surface, in segment order."""
+    rows = table[(table["joint"] == joint) & (table["surface"] == surface)].sort_values("sector")
+    return rows["position_m"].to_numpy(), rows["depth_m"].to_numpy()
+
+
+def _snapshots(results: Results) -> list[tuple[float, pd.DataFrame]]:
+    """(time [s], wear table) of each snapshot before the end of the run."""
+    snaps = results.wear_snapshots
+    if not len(snaps):
+        return []
+    t_end = float(results.timeseries["time"].iloc[-1])
+    half_row = 0.5 * results.model.solver.output_interval
+    return [(float(t), table) for t, table in snaps.groupby("time_s") if t < t_end - half_row]
+
+
+def _wear_panel(
+    ax: Axes, results: Results, joint: TranslationalJoint, part: str, length: float
+) -> None:
+    """Wear depth [µm] along the ``part`` ("guide", "slider") surfaces: snapshots, then the end."""
+    snapshots = _snapshots(results)
+    times = [f"{t:.3g}" for t, _ in snapshots]
+    times = times if len(times) <= 4 else [times[0], "…", times[-1]]
+    for side, color in SURFACE_COLORS.items():
+        surface = f"{part}_{side}"
+        for n, (_, table) in enumerate(snapshots):
+            position, depth = _depths(table, joint.name, surface)
+            label = f"t = {', '.join(times)} s (lighter)" if n == 0 and side == "top" else None
+            ax.plot(position * MM, depth * UM, lw=0.8, color=color, alpha=SNAPSHOT_ALPHA,
+                    label=label)  # fmt: skip
+        position, depth = _depths(results.wear, joint.name, surface)
+        ax.plot(position * MM, depth * UM, "o-", ms=3, lw=1.2, color=color, label=surface)
+    body = joint.bodies[0] if part == "guide" else joint.bodies[1]
+    where = "its middle" if part == "guide" else "its centre"
+    ax.set_xlabel(f"position along the {part} from {where} ({body} frame) [mm]")
+    ax.set_ylabel("wear depth [µm]")
+    ax.set_xlim(-0.5 * length * MM, 0.5 * length * MM)
+    ax.set_ylim(bottom=0.0)
+    ax.grid(alpha=0.3)
+    ax.legend(loc="upper right", fontsize="small")
+
+
+def plot_guide_wear(results: Results) -> Figure:
+    """Wear depth [µm] along the guide's and the slider's surfaces [mm] at the end of the run.
+
+    Earlier wear snapshots as lighter lines. An unbounded guide keeps no map of its wear:
+    its joint shows the slider's surfaces only (said in the titles).
+    """
+    joints = _joints(results)
+    t_end = float(results.timeseries["time"].iloc[-1])
+    columns = 2 if any(j.clearance.guide_length for j in joints) else 1
+    fig = Figure(figsize=(5.5 * columns + 1.0, 4.2 * len(joints) + 0.6), layout="constrained")
+    axes = fig.subplots(len(joints), columns, squeeze=False)
+    for row, joint in zip(axes, joints, strict=True):
+        c = joint.clearance
+        guide, slider = joint.bodies
+        _wear_panel(row[-1], results, joint, "slider", c.slider_length)
+        if c.guide_length:
+            _wear_panel(row[0], results, joint, "guide", c.guide_length)
+            row[0].set_title(f"{joint.name}: guide ({guide})")
+            row[-1].set_title(f"{joint.name}: slider ({slider})")
+        else:
+            row[-1].set_title(f"{joint.name}: slider ({slider}) only: unbounded guide, not mapped")
+            if columns == 2:
+                row[0].set_axis_off()
+                note = f"{joint.name}: the guide is unbounded;\nits wear is not mapped"
+                row[0].text(0.5, 0.5, note, ha="center", va="center", transform=row[0].transAxes)
+    unbounded = [j.name for j in joints if not j.clearance.guide_length]
+    note = f" (unbounded guide of {', '.join(unbounded)}: slider only)" if unbounded else ""
+    fig.suptitle(f"{results.model.name}: wear depth at t = {t_end:.4g} s{note}")
+    return fig
+
+
+def save_slider_figures(results: Results, folder: str | Path) -> list[Path]:
+    """Write the slider figures into ``folder`` as PNG; return the paths.
+
+    Nothing is written when the model has no translational clearance joints.
+    """
+    if not results.model.slider_joints:
+        return []
+    path = Path(folder)
+    path.mkdir(parents=True, exist_ok=True)
+    draws = (plot_slider_motion, plot_corner_forces, plot_guide_wear)
+    written = []
+    for name, draw in zip(SLIDER_FIGURES, draws, strict=True):
+        draw(results).savefig(path / f"{name}.png", dpi=150)
+        written.append(path / f"{name}.png")
+    return written

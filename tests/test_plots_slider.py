@@ -1,0 +1,249 @@
+"""Slider figures (translational clearance joints) and the slider in the animation."""
+
+import math
+
+import numpy as np
+import pytest
+from PIL import Image
+from runs import EXAMPLES, simulate_ok
+
+import jointwear as jw
+from jointwear.figures.animation import CLEARANCE_SHARE, mechanism_scene, save_animation
+from jointwear.figures.clearance import plot_dynamics, plot_wear_sectors
+from jointwear.figures.folder import ALL_FIGURES, save_figures
+from jointwear.figures.slider import (
+    SLIDER_FIGURES,
+    crank_abscissa,
+    plot_corner_forces,
+    plot_guide_wear,
+    plot_slider_motion,
+    save_slider_figures,
+    tilt_limit,
+)
+
+PISTON = EXAMPLES / "slider_crank_piston_clearance.toml"
+# About 1.2 free-crank turns (the crank slows at mid-stroke); snapshots at 0.03 and 0.06 s.
+SHORT = ["solver.t_end=0.08", "solver.output_interval=0.2 ms", "solver.wear_snapshot_interval=0.03"]
+JOINT = "piston"
+GAP, HALF_LENGTH, HALF_HEIGHT, GUIDE_HALF_LENGTH = 1e-3, 0.05, 0.025, 0.22  # [m], the example's
+GUIDE_CENTRE = 0.306  # [m] global x of the guide's middle (its axis is global x)
+CORNERS = ["rear_top", "front_top", "rear_bottom", "front_bottom"]  # the panels' order
+
+
+@pytest.fixture(scope="module")
+def piston():
+    return simulate_ok(PISTON, SHORT)
+
+
+@pytest.fixture(scope="module")
+def unbounded():
+    """The example with an unbounded guide, for less than a crank turn."""
+    model = jw.load_model(PISTON, overrides=["solver.t_end=0.03", "solver.output_interval=0.5 ms"])
+    joints = tuple(
+        j.model_copy(update={"clearance": j.clearance.model_copy(update={"guide_length": None})})
+        if j.name == JOINT
+        else j
+        for j in model.joints
+    )
+    res = jw.simulate(model.model_copy(update={"joints": joints}))
+    assert res.status == "success", res.message
+    return res
+
+
+def rows(table, surface):
+    picked = table[(table["joint"] == JOINT) & (table["surface"] == surface)]
+    return picked.sort_values("sector")
+
+
+def test_save_slider_figures_writes_every_png(piston, tmp_path):
+    paths = save_slider_figures(piston, tmp_path / "figs")
+    assert [p.name for p in paths] == [f"{name}.png" for name in SLIDER_FIGURES]
+    for path in paths:
+        with Image.open(path) as image:
+            assert image.format == "PNG"
+            assert min(image.size) > 600
+
+
+def test_figure_folder_draws_the_slider_figures_only(piston, tmp_path):
+    (tmp_path / "fig8_wear_sectors.png").write_bytes(b"left by a revolute run")
+    paths = save_figures(piston, tmp_path, animation=False)
+    names = {p.name for p in paths}
+    assert names == {"energy.png", *(f"{n}.png" for n in SLIDER_FIGURES)}
+    assert names <= ALL_FIGURES
+    assert not (tmp_path / "fig8_wear_sectors.png").exists()
+
+
+def test_no_slider_joints_no_figures(tmp_path):
+    pendulum = simulate_ok(
+        EXAMPLES / "pendulum.toml", ["solver.t_end=0.01", "solver.output_interval=0.002"]
+    )
+    assert save_slider_figures(pendulum, tmp_path / "none") == []
+    assert not (tmp_path / "none").exists()
+    with pytest.raises(ValueError, match="no translational clearance joints"):
+        plot_slider_motion(pendulum)
+
+
+def test_free_crank_angle_is_the_abscissa(piston):
+    ts = piston.timeseries
+    x = crank_abscissa(piston)
+    assert x.crank == "crank"
+    np.testing.assert_allclose(x.values, np.degrees(ts["phi_crank"] - ts["phi_crank"].iloc[0]))
+    assert 360.0 < x.values[-1] < 720.0
+
+
+def test_motion_lines_are_the_time_series(piston):
+    lateral, tilt = plot_slider_motion(piston).axes
+    ts = piston.timeseries
+    np.testing.assert_array_equal(lateral.lines[0].get_ydata(), ts[f"{JOINT}_lateral"] * 1e3)
+    np.testing.assert_array_equal(tilt.lines[0].get_ydata(), ts[f"{JOINT}_tilt"] * 1e3)
+    np.testing.assert_array_equal(lateral.lines[0].get_xdata(), crank_abscissa(piston).values)
+    gap_lines = [line.get_ydata()[0] for line in lateral.lines[1:3]]
+    assert gap_lines == pytest.approx([1.0, -1.0])  # ±c [mm]
+    assert lateral.get_ylabel() == "lateral offset [mm]"
+    assert tilt.get_ylabel() == "tilt [mrad]"
+    assert "crank angle" in tilt.get_xlabel()
+    # The slider stays in its guide: within the gap, give or take the contact's penetration.
+    assert np.abs(ts[f"{JOINT}_lateral"]).max() == pytest.approx(GAP, rel=0.1)
+
+
+def test_tilt_limit_puts_opposite_corners_on_both_surfaces(piston):
+    clearance = piston.model.joint(JOINT).clearance
+    t = tilt_limit(clearance)
+    reach = HALF_LENGTH * math.sin(t) + HALF_HEIGHT * math.cos(t)
+    assert reach == pytest.approx(HALF_HEIGHT + GAP, rel=1e-12)
+    assert t == pytest.approx(2.0 * GAP / (2.0 * HALF_LENGTH), rel=0.01)
+
+
+def test_corner_force_panels_hold_each_corner(piston):
+    axes = plot_corner_forces(piston).axes
+    ts = piston.timeseries
+    assert len(axes) == 4
+    for ax, corner in zip(axes, CORNERS, strict=True):
+        assert ax.get_title(loc="left").startswith(f"{JOINT}: {corner} corner")
+        np.testing.assert_array_equal(ax.lines[0].get_ydata(), ts[f"{JOINT}_fn_{corner}"])
+        # The guide is long enough that its ends never touch: no edge lines.
+        assert not ts[f"{JOINT}_fn_edge_{corner}"].any()
+        assert len(ax.lines) == 1
+    assert max(ts[f"{JOINT}_fn_{c}"].max() for c in CORNERS) > 0.0
+
+
+def test_wear_lines_are_the_wear_table(piston):
+    guide, slider = plot_guide_wear(piston).axes
+    snapshots = piston.wear_snapshots
+    times = sorted(snapshots["time_s"].unique())
+    assert times == pytest.approx([0.03, 0.06])
+    for ax, part in [(guide, "guide"), (slider, "slider")]:
+        assert len(ax.lines) == 2 * (len(times) + 1)  # top and bottom: snapshots, then the end
+        for side in ("top", "bottom"):
+            surface = f"{part}_{side}"
+            (final,) = [line for line in ax.lines if line.get_label() == surface]
+            table = rows(piston.wear, surface)
+            np.testing.assert_array_equal(final.get_ydata(), table["depth_m"] * 1e6)
+            np.testing.assert_array_equal(final.get_xdata(), table["position_m"] * 1e3)
+            same = [line for line in ax.lines if line.get_color() == final.get_color()]
+            for line, time in zip(same[:-1], times, strict=True):
+                snap = rows(snapshots[snapshots["time_s"] == time], surface)
+                np.testing.assert_array_equal(line.get_ydata(), snap["depth_m"] * 1e6)
+                assert line.get_alpha() < 1.0
+        assert ax.get_ylabel() == "wear depth [µm]"
+    assert guide.get_xlim() == pytest.approx((-220.0, 220.0))
+    assert slider.get_xlim() == pytest.approx((-50.0, 50.0))
+    assert piston.wear["depth_m"].max() > 0.0
+
+
+def test_unbounded_guide_shows_the_slider_only(unbounded, tmp_path):
+    assert set(unbounded.wear["surface"]) == {"slider_top", "slider_bottom"}
+    fig = plot_guide_wear(unbounded)
+    (slider,) = fig.axes
+    assert "unbounded" in slider.get_title() and "unbounded" in fig.get_suptitle()
+    assert {line.get_label() for line in slider.lines} >= {"slider_top", "slider_bottom"}
+    assert len(plot_corner_forces(unbounded).axes) == 4  # corners only: no edge columns
+    lateral, tilt = plot_slider_motion(unbounded).axes
+    assert crank_abscissa(unbounded).crank is None  # less than a turn: against time
+    assert tilt.get_xlabel() == "time [s]"
+    np.testing.assert_array_equal(lateral.lines[0].get_xdata(), unbounded.timeseries["time"])
+    assert len(save_slider_figures(unbounded, tmp_path)) == 3
+
+
+def frame_rows(results, scene):
+    ts = results.timeseries
+    picked = ts[ts["time"].isin(scene.times)]
+    assert len(picked) == len(scene.times)
+    return picked
+
+
+def test_animation_draws_the_slider_magnified(piston, tmp_path):
+    path = save_animation(piston, tmp_path / "piston.gif", frames=12)
+    with Image.open(path) as gif:
+        assert gif.format == "GIF"
+        assert gif.n_frames == 12
+    scene = mechanism_scene(piston, frames=12)
+    ts = frame_rows(piston, scene)
+    phi = ts["phi_crank"].to_numpy()
+    last = piston.timeseries["phi_crank"].iloc[-1]
+    assert phi[-1] == last and 2.0 * math.pi * 0.95 < last - phi[0] <= 2.0 * math.pi  # one turn
+    # The mechanism spans about 0.612 m (crank tip at x = -0.153 m to the slider at 0.459 m).
+    assert scene.scale == pytest.approx(CLEARANCE_SHARE * 0.612 / GAP, rel=0.05)
+    ax = scene.figure.axes[0]
+    (block,) = [p for p in ax.patches if p.get_width() == pytest.approx(2 * HALF_LENGTH)]
+    rod = next(line for line in ax.lines if line.get_label() == "rod")
+    drawn_half_height = HALF_HEIGHT + scene.scale * GAP
+    for k in (0, 5, 11):
+        scene.draw(k)
+        row = ts.iloc[k]
+        assert block.get_angle() == pytest.approx(math.degrees(scene.scale * row[f"{JOINT}_tilt"]))
+        centre = block.get_corners().mean(axis=0)
+        assert centre == pytest.approx(
+            [row["x_slider"], scene.scale * row[f"{JOINT}_lateral"]], abs=1e-12
+        )
+        assert [rod.get_xdata()[-1], rod.get_ydata()[-1]] == pytest.approx(centre, abs=1e-12)
+        guides = [line for line in ax.lines if line.get_color() == "k"]
+        assert len(guides) == 2
+        for line, side in zip(guides, (1.0, -1.0), strict=True):
+            assert line.get_ydata() == pytest.approx([side * drawn_half_height] * 2)
+            assert line.get_xdata() == pytest.approx(
+                [GUIDE_CENTRE - GUIDE_HALF_LENGTH, GUIDE_CENTRE + GUIDE_HALF_LENGTH]
+            )
+    assert "× " in ax.get_title() and "gap 1 mm" in ax.get_title()
+
+
+def test_animation_of_an_unbounded_guide_spans_the_travel(unbounded):
+    scene = mechanism_scene(unbounded, frames=10, clearance_scale=10.0)
+    ts = frame_rows(unbounded, scene)  # no crank turn: the last 0.04 s, the whole run here
+    ax = scene.figure.axes[0]
+    top = next(line for line in ax.lines if line.get_color() == "k")
+    scene.draw(0)
+    along = ts["x_slider"] - GUIDE_CENTRE
+    assert top.get_xdata() == pytest.approx(
+        [GUIDE_CENTRE + along.min() - HALF_LENGTH, GUIDE_CENTRE + along.max() + HALF_LENGTH]
+    )
+    assert top.get_ydata() == pytest.approx([HALF_HEIGHT + 10.0 * GAP] * 2)
+
+
+def test_revolute_and_slider_clearances_draw_both_sets(tmp_path):
+    pin = "joints.crank_rod.clearance"
+    both = simulate_ok(
+        PISTON,
+        [
+            "solver.t_end=0.02",
+            "solver.output_interval=0.5 ms",
+            f"{pin}.bearing_radius='10 mm'",
+            f"{pin}.journal_radius='9.5 mm'",
+            f"{pin}.width='40 mm'",
+            f"{pin}.youngs_modulus='207 GPa'",
+            f"{pin}.poisson_ratio=0.3",
+            f"{pin}.restitution_coefficient=0.9",
+            f"{pin}.friction_coefficient=0.01",
+            f"{pin}.wear_coefficient='8e-14 1/Pa'",
+        ],
+    )
+    assert set(both.wear["surface"]) >= {"journal", "bearing", "guide_top", "slider_top"}
+    paths = save_figures(both, tmp_path, animation=False)
+    assert {p.name for p in paths} == ALL_FIGURES - {"cycle.png", "mechanism.gif"}
+    velocity = plot_dynamics(both).axes[0]  # the slider tilts, but its x motion is the output
+    assert velocity.get_ylabel() == "x velocity [m/s]"
+    ax = plot_wear_sectors(both).axes[0]  # the journal
+    np.testing.assert_array_equal(
+        ax.lines[-1].get_ydata(),
+        both.wear[both.wear["surface"] == "journal"].sort_values("sector")["depth_m"] * 1e6,
+    )
