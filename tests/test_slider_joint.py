@@ -530,3 +530,11 @@ def test_both_kinds_in_one_model_share_the_tables_and_restart():
         - first.wear[first.wear["joint"] == "slider_guide"]["depth_m"].sum()
     )
     assert added > 0.0 and mapped == pytest.approx(added, rel=1e-12)
+
+
+def test_a_slider_outside_its_finite_guide_is_refused():
+    # The guide is 5 mm long and centred 0.2 m behind the block: they never overlap.
+    data = block_model(clearance(guide_length=0.005), [], t_end=0.01)
+    data["ground"]["points"]["g"] = [-0.2, 0.0]
+    with pytest.raises(jw.ModelError, match=r"joints.guide: the slider starts wholly outside"):
+        jw.simulate(parse_model(data))

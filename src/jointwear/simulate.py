@@ -25,7 +25,7 @@ from .kernels.elements import ElementLog, Elements, ElementScratch, ElementState
 from .kernels.integrate.abm import make_abm_state
 from .kernels.integrate.rk import DOPRI5, S_T, make_rk_state
 from .kernels.structs import StructProxy, to_struct
-from .model import Model
+from .model import Model, ModelError
 from .results import Results
 from .results import slider as slider_results
 from .results.clearance import (
@@ -43,6 +43,7 @@ from .system import (
     column_names,
     constraint_count,
     freed_degrees_of_freedom,
+    sliders_outside_guides,
 )
 
 CHUNK_WALL_S = 0.2  # target wall time of one compiled chunk [s]
@@ -75,8 +76,12 @@ def _integrator(method: Method, n_state: int) -> object:
 
 def _kernel_arrays(
     system: System, n_state: int, n_events: int, n_snapshots: int
-) -> tuple[Problem, loop.Log, loop.Scratch]:
-    """The problem the right-hand side reads, the run's log and the loop's scratch."""
+) -> tuple[Problem, loop.Log, loop.Scratch, ElementState, ElementLog]:
+    """The problem the right-hand side reads, the run's log and the loop's scratch.
+
+    Each element kind's tables go in as structs (one pointer per call, ``kernels.structs``);
+    the last two returned are their states and logs as named tuples, for Python to read.
+    """
     table, state, element_log, scratch = journal.make_journals(
         system.journal_ints, system.journal_params, n_snapshots
     )
@@ -84,11 +89,13 @@ def _kernel_arrays(
         system.slider_ints, system.slider_params, n_snapshots
     )
     n = n_state // 2
+    states = ElementState(journal=state, slider=s_state)
+    logs = ElementLog(journal=element_log, slider=s_log)
     problem = Problem(
         mech=system.mechanism,
-        elements=Elements(journal=table, slider=s_table),
-        state=ElementState(journal=state, slider=s_state),
-        scratch=ElementScratch(journal=scratch, slider=s_scratch),
+        elements=Elements(journal=to_struct(table), slider=to_struct(s_table)),
+        state=ElementState(journal=to_struct(state), slider=to_struct(s_state)),
+        scratch=ElementScratch(journal=to_struct(scratch), slider=to_struct(s_scratch)),
         dyn=make_dynamics_scratch(n, constraint_count(system.mechanism)),
     )
     slots = system.journal_ints.shape[0] + slider.SLOTS * system.slider_ints.shape[0]
@@ -104,7 +111,7 @@ def _kernel_arrays(
         impact_time=np.zeros(impacts),
         impact_slot=np.zeros(impacts, dtype=np.int64),
         impact_info=np.zeros((impacts, max(journal.N_IMPACT_INFO, slider.N_IMPACT_INFO))),
-        elements=ElementLog(journal=element_log, slider=s_log),
+        elements=ElementLog(journal=to_struct(element_log), slider=to_struct(s_log)),
     )
     work = loop.Scratch(
         y=np.zeros(n_state),
@@ -113,7 +120,7 @@ def _kernel_arrays(
         y_mid=np.zeros(n_state),
         event_prev=np.zeros(n_events),
     )
-    return problem, log, work
+    return problem, log, work, states, logs
 
 
 def _by_reference(*tables: NamedTuple) -> tuple[StructProxy, ...]:
@@ -151,6 +158,9 @@ def simulate(
     solver = model.solver
     system = build_system(model)
     assembly = assemble(model, build_system(model, ideal=True))  # journals centred
+    outside = sliders_outside_guides(model, assembly.y0)
+    if outside:
+        raise ModelError(outside)
     n_state = assembly.y0.shape[0]
     t0 = 0.0 if initial is None else initial.time
     t_end = t0 + solver.t_end
@@ -167,10 +177,10 @@ def simulate(
         snapshot_times=_snapshot_times(t0, solver.t_end, solver.wear_snapshot_interval),
     )
     integ = _integrator(solver.method, n_state)
-    problem, log, scratch = _kernel_arrays(
+    problem, log, scratch, states, element_logs = _kernel_arrays(
         system, n_state, len(model.events), ctl.snapshot_times.shape[0]
     )
-    journals, sliders = problem.state.journal, problem.state.slider
+    journals, sliders = states
     impacts: list[dict] = []
     columns = column_names(model)
     buffer = np.zeros((max(ctl.rows_per_step * 4, 1024), len(columns)))
@@ -179,7 +189,7 @@ def simulate(
 
     y0 = assembly.y0
     if initial is not None:
-        _check_initial(initial, y0, journals.wear, sliders.wear)
+        _check_initial(initial, y0, journals, sliders)
         y0 = initial.y
         journals.wear[:] = initial.wear
         journals.contact_on[:] = initial.contact_on
@@ -254,8 +264,8 @@ def simulate(
     if model.has_clearance:
         tables["wear"] = wear_table(model, journals.wear, sliders.wear)
         tables["wear_snapshots"] = snapshot_table(
-            model, ctl.snapshot_times, log.elements.journal.snapshots,
-            int(log.counters[Counter.SNAPSHOTS]), log.elements.slider.snapshots,
+            model, ctl.snapshot_times, element_logs.journal.snapshots,
+            int(log.counters[Counter.SNAPSHOTS]), element_logs.slider.snapshots,
         )  # fmt: skip
         tables["impacts"] = pd.DataFrame.from_records(impacts, columns=impact_columns(model))
     summary = {
@@ -269,10 +279,10 @@ def simulate(
     if model.has_clearance:
         duration = t_reached - t0
         journal_figures = joint_summaries(
-            model, log.elements.journal.totals, journals.wear, duration
+            model, element_logs.journal.totals, journals.wear, duration
         )
         slider_figures = slider_results.joint_summaries(
-            model, log.elements.slider.totals, sliders.wear, duration
+            model, element_logs.slider.totals, sliders.wear, duration
         )
         summary["clearance_joints"] = journal_figures | slider_figures
     return Results(
@@ -286,11 +296,13 @@ def simulate(
 
 
 def _check_initial(
-    initial: RunState, y0: np.ndarray, wear: np.ndarray, slider_wear: np.ndarray
+    initial: RunState, y0: np.ndarray, journals: journal.JournalState, sliders: slider.SliderState
 ) -> None:
     """Refuse a starting state that does not fit the model."""
-    pairs = (("y", initial.y, y0), ("wear", initial.wear, wear),
-             ("slider_wear", initial.slider_wear, slider_wear))  # fmt: skip
+    pairs = (("y", initial.y, y0), ("wear", initial.wear, journals.wear),
+             ("contact_on", initial.contact_on, journals.contact_on),
+             ("slider_wear", initial.slider_wear, sliders.wear),
+             ("slider_contact_on", initial.slider_contact_on, sliders.contact_on))  # fmt: skip
     for name, given, expected in pairs:
         if given.shape != expected.shape:
             raise ValueError(

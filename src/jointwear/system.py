@@ -365,6 +365,37 @@ def build_system(model: Model, *, ideal: bool = False) -> System:
     )
 
 
+def sliders_outside_guides(model: Model, y0: NDArray[np.float64]) -> list[str]:
+    """One line per slider that starts wholly outside its finite guide, at the pose y0."""
+    index = {name: i for i, name in enumerate(model.body_names)}
+
+    def place(body: str, x: float, y: float) -> NDArray[np.float64]:
+        if body == "ground":
+            return np.array([x, y])
+        bx, by, phi = y0[3 * index[body] : 3 * index[body] + 3]
+        c, s = np.cos(phi), np.sin(phi)
+        return np.array([bx + c * x - s * y, by + s * x + c * y])
+
+    problems = []
+    for joint in model.slider_joints:
+        c = joint.clearance
+        if c.guide_length is None:
+            continue
+        guide, slider = joint.bodies
+        origin = place(guide, *model.point(guide, joint.points[0]))
+        axis = place(guide, *joint.axis) - place(guide, 0.0, 0.0)
+        centre = place(slider, *model.point(slider, joint.points[1]))
+        x = float((centre - origin) @ axis / np.linalg.norm(axis))
+        if abs(x) >= 0.5 * (c.guide_length + c.slider_length):
+            problems.append(
+                f"joints.{joint.name}: the slider starts wholly outside its guide (its centre "
+                f"{x * 1e3:.6g} mm along the axis from the guide's point, the guide "
+                f"{c.guide_length * 1e3:.6g} mm long and centred there); move the slider or "
+                "the guide's point, or lengthen guide_length"
+            )
+    return problems
+
+
 def initial_guess(model: Model) -> NDArray[np.float64]:
     """State guess (q, q') from the bodies' initial poses and velocities."""
     q = [v for b in model.bodies for v in (b.position[0], b.position[1], b.angle)]

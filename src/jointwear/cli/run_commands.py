@@ -148,11 +148,14 @@ def check(model: ModelPath, overrides: Overrides = None) -> None:
     """
     from ..assembly import assemble  # the model schema and one compiled kernel, no pandas
     from ..model import ModelError, load_model
-    from ..system import build_system, freed_degrees_of_freedom
+    from ..system import build_system, freed_degrees_of_freedom, sliders_outside_guides
 
     try:
         parsed = load_model(model, overrides or [])
         assembly = assemble(parsed, build_system(parsed, ideal=True))
+        outside = sliders_outside_guides(parsed, assembly.y0)
+        if outside:
+            raise ModelError(outside)
     except ModelError as error:
         raise fail(error) from None
     out.print(f"model '{parsed.name}': valid")
