@@ -17,6 +17,7 @@ from numpy.typing import NDArray
 from .kernels.constraints import evaluate_constraints
 from .kernels.structs import to_struct
 from .model import Model, ModelError
+from .pattern import ENTRIES
 from .system import System, constraint_count, initial_guess
 
 MAX_ITERATIONS = 50
@@ -31,6 +32,7 @@ class Assembly:
     iterations: int  # Newton iterations used
     residual: float  # max |Phi| at the solution [m or rad]
     dof: int  # degrees of freedom left by joints and drivers
+    redundant: int  # constraint equations that depend on others (at the initial pose)
     dof_without_drivers: int  # degrees of freedom of the joints alone
 
 
@@ -50,11 +52,16 @@ def row_labels(model: Model) -> list[str]:
 
 
 def _evaluate(system: System, q: NDArray, qd: NDArray) -> tuple[NDArray, NDArray, NDArray]:
-    m = constraint_count(system.mechanism)
+    """Phi, the dense Jacobian Phi_q and Phi_t at (q, q'), t = 0."""
+    mech = system.mechanism
+    m = constraint_count(mech)
     phi, gamma, phi_t = np.zeros(m), np.zeros(m), np.zeros(m)
-    cq = np.zeros((m, q.shape[0]))
+    entries = np.zeros((m, ENTRIES))
     # as a struct, the one specialization the step loop compiles too (kernels/structs.py)
-    evaluate_constraints(0.0, q, qd, to_struct(system.mechanism), phi, cq, gamma, phi_t)
+    evaluate_constraints(0.0, q, qd, to_struct(mech), phi, entries, gamma, phi_t)
+    cq = np.zeros((m, q.shape[0]))
+    rows, slots = np.nonzero(mech.row_coord >= 0)
+    cq[rows, mech.row_coord[rows, slots]] = entries[rows, slots]
     return phi, cq, phi_t
 
 
@@ -75,8 +82,10 @@ def _redundancy_message(cq: NDArray, labels: list[str]) -> str:
     involved = [labels[i] for i in np.flatnonzero(weights > 1e-6)]
     return (
         f"constraints: the Jacobian has rank {rank} for {m} equations (redundant or singular); "
-        f"the dependent equations involve {', '.join(involved)}; remove a redundant joint or "
-        "driver, or move the initial pose away from a singular (dead-centre) position"
+        f"the dependent equations involve {', '.join(involved)}; the Baumgarte formulation "
+        "needs independent constraints: use solver.formulation = 'augmented_lagrangian', "
+        "remove a redundant joint or driver, or move the initial pose away from a singular "
+        "(dead-centre) position"
     )
 
 
@@ -110,7 +119,7 @@ def assemble(model: Model, system: System, tolerance: float | None = None) -> As
         phi, cq, phi_t = _evaluate(system, q, qd)
         iterations += 1
     rank, _, _ = _rank(cq)
-    if rank < cq.shape[0]:
+    if rank < cq.shape[0] and model.solver.formulation == "baumgarte":
         raise ModelError([_redundancy_message(cq, labels)])
     qd -= np.linalg.lstsq(cq, cq @ qd + phi_t, rcond=None)[0]
     joint_rows = 2 * system.mechanism.joint_kind.shape[0]
@@ -119,5 +128,6 @@ def assemble(model: Model, system: System, tolerance: float | None = None) -> As
         iterations=iterations,
         residual=float(np.max(np.abs(phi), initial=0.0)),
         dof=n - rank,
+        redundant=cq.shape[0] - rank,
         dof_without_drivers=n - _rank(cq[:joint_rows])[0],
     )

@@ -17,6 +17,7 @@ import pandas as pd
 
 from ._version import __version__
 from .assembly import assemble
+from .energy import EnergyMonitor
 from .interrupts import stop_requests
 from .kernels import loop
 from .kernels.codes import N_COUNTERS, Counter, Method, Status
@@ -41,7 +42,6 @@ from .system import (
     System,
     build_system,
     column_names,
-    constraint_count,
     freed_degrees_of_freedom,
     sliders_outside_guides,
 )
@@ -88,7 +88,6 @@ def _kernel_arrays(
     s_table, s_state, s_log, s_scratch = slider.make_sliders(
         system.slider_ints, system.slider_params, n_snapshots
     )
-    n = n_state // 2
     states = ElementState(journal=state, slider=s_state)
     logs = ElementLog(journal=element_log, slider=s_log)
     problem = Problem(
@@ -96,7 +95,7 @@ def _kernel_arrays(
         elements=Elements(journal=to_struct(table), slider=to_struct(s_table)),
         state=ElementState(journal=to_struct(state), slider=to_struct(s_state)),
         scratch=ElementScratch(journal=to_struct(scratch), slider=to_struct(s_scratch)),
-        dyn=make_dynamics_scratch(n, constraint_count(system.mechanism)),
+        dyn=make_dynamics_scratch(system.mechanism),
     )
     slots = system.journal_ints.shape[0] + slider.SLOTS * system.slider_ints.shape[0]
     # A step logs at most one crossing per event and one onset per slot: room for many steps.
@@ -158,6 +157,8 @@ def simulate(
     solver = model.solver
     system = build_system(model)
     assembly = assemble(model, build_system(model, ideal=True))  # journals centred
+    if assembly.redundant:  # rows report the least-norm multipliers (kernels.dynamics)
+        system = system._replace(mechanism=system.mechanism._replace(redundant=True))
     outside = sliders_outside_guides(model, assembly.y0)
     if outside:
         raise ModelError(outside)
@@ -175,6 +176,7 @@ def simulate(
         output_times=output_times,
         rows_per_step=math.ceil(solver.max_step / solver.output_interval) + 2,
         snapshot_times=_snapshot_times(t0, solver.t_end, solver.wear_snapshot_interval),
+        max_violation=solver.max_constraint_violation,
     )
     integ = _integrator(solver.method, n_state)
     problem, log, scratch, states, element_logs = _kernel_arrays(
@@ -198,6 +200,7 @@ def simulate(
         sliders.contact_on[:] = initial.slider_contact_on
         sliders.impact_speed[:] = initial.slider_impact_speed
 
+    energy = EnergyMonitor(model, columns)
     wall_start = time.perf_counter()
     status = Status.RUNNING
     args = _by_reference(problem, integ, system.events, ctl, log, scratch)
@@ -213,6 +216,8 @@ def simulate(
             code, rows = loop.advance(*args, buffer, t_before + chunk, steps_before + budget)
             status = Status(code)
             blocks.append(buffer[:rows].copy())
+            if energy.update(blocks[-1]) and status in (Status.RUNNING, Status.SUCCESS):
+                status = Status.ENERGY_DRIFT
             for i in range(log.counters[Counter.EVENTS]):
                 direction = "rising" if log.event_rising[i] else "falling"
                 name = model.events[log.event_index[i]].name
@@ -275,6 +280,13 @@ def simulate(
         "message": status_message(status),
         "settings": model.solver.model_dump(mode="json"),
         "stats": stats,
+        "constraints": {
+            "formulation": solver.formulation,
+            "max_violation": stats["max_constraint_violation"],
+            "bound": solver.max_constraint_violation,
+            "redundant_equations": assembly.redundant,
+        },
+        "energy": energy.summary(),
     }
     if model.has_clearance:
         duration = t_reached - t0

@@ -2,7 +2,8 @@
 
 These are the ``status`` values of ``summary.json``, ``case.json``, ``sweep.csv`` and a life
 run's ``summary.json``. A run's status is the name of the kernels' ``Status`` code in lowercase
-(``status_name``: ``success``, ``non_finite``, ``singular``, ``max_steps``, ``interrupted``);
+(``status_name``: ``success``, ``non_finite``, ``singular``, ``max_steps``, ``interrupted``,
+``constraint_drift``, ``energy_drift``);
 a sweep case adds ``error`` and ``not_run``, a life run ``failed``, ``worn_through`` and
 ``clearance_limit``. Everything but ``success`` means the work did not get to its end.
 """
@@ -45,9 +46,17 @@ _MESSAGES = {
     Status.NON_FINITE: "the state became non-finite (NaN or inf) at the minimum step; check "
     "forces and stiffness, or try tighter tolerances or a smaller solver.max_step",
     Status.SINGULAR: "the constraint Jacobian became singular (a dead-centre or lock-up "
-    "position); check the geometry and the drivers",
+    "position); check the geometry and the drivers, or use solver.formulation = "
+    "'augmented_lagrangian', which passes singular positions",
     Status.MAX_STEPS: "solver.max_steps was reached; raise it or loosen the tolerances",
     Status.INTERRUPTED: "interrupted by the user; the results hold what was computed so far",
+    Status.CONSTRAINT_DRIFT: "the joint constraints drifted past solver.max_constraint_violation "
+    "(the motion may have left its assembly branch, as at a dead-centre or flat position); try "
+    "solver.formulation = 'augmented_lagrangian', or tighter tolerances",
+    Status.ENERGY_DRIFT: "the energy of this conservative mechanism changed by more than "
+    "solver.max_energy_error of its scale (summary.json, 'energy'): the motion has probably "
+    "left its assembly branch at a singular position; try solver.formulation = "
+    "'augmented_lagrangian', or tighter tolerances",
 }
 
 

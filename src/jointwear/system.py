@@ -18,11 +18,14 @@ from .kernels.elements import slider as sc
 from .kernels.loop import UserEvents
 from .model import Model
 from .model.clearance import WEAR_DISTRIBUTIONS, Clearance, law_parameters
+from .model.sections import FORMULATIONS
 from .model.slide_clearance import SlideClearance
+from .pattern import build_pattern
 
 GROUND = -1
 MAX_COEFFICIENTS = 8
 BODY_COLUMNS = ("x", "y", "phi", "vx", "vy", "omega", "ax", "ay", "alpha")
+PROJECTION_TOLERANCE = 1e-13  # constraint norm the projections reach, of the mechanism's size
 
 
 class Mechanism(NamedTuple):
@@ -51,6 +54,20 @@ class Mechanism(NamedTuple):
     force_param: NDArray[np.float64]  # (nl, 3) stiffness, damping, free length or angle
     baumgarte_alpha: float  # [1/s]
     baumgarte_beta: float  # [1/s]
+    formulation: int  # Formulation
+    penalty: float  # augmented Lagrangian penalty, relative to each row's effective mass [-]
+    projection_tolerance: float  # 2-norm of Phi (and Phi') the projections reach [m, rad]
+    redundant: bool  # whether output rows need the least-norm multipliers (set by simulate)
+    # The sparse Jacobian and the envelopes of the matrices factorised (pattern.Pattern)
+    row_coord: NDArray[np.int64]
+    row_order: NDArray[np.int64]
+    row_first: NDArray[np.int64]
+    row_ptr: NDArray[np.int64]
+    row_pairs: NDArray[np.int64]
+    coord_order: NDArray[np.int64]
+    coord_first: NDArray[np.int64]
+    coord_ptr: NDArray[np.int64]
+    row_entry_pairs: NDArray[np.int64]
 
 
 class System(NamedTuple):
@@ -126,6 +143,14 @@ class _Functions:
             FunctionKind.HARMONIC,
             [spec.offset, spec.amplitude, spec.angular_frequency, spec.phase],
         )
+
+
+def _size(model: Model) -> float:
+    """The mechanism's size [m]: its largest point or position coordinate, at least 1 mm."""
+    points = [abs(v) for b in model.bodies for p in b.points.values() for v in p]
+    points += [abs(v) for p in model.ground.points.values() for v in p]
+    points += [abs(v) for b in model.bodies for v in b.position]
+    return max([1e-3, *points])
 
 
 def _table(rows: list, shape: tuple[int, ...], dtype: type) -> NDArray:
@@ -320,6 +345,13 @@ def build_system(model: Model, *, ideal: bool = False) -> System:
         loads["param"].append(param)
 
     coordinate = {"x": 0, "y": 1, "phi": 2}
+    row_bodies = np.zeros((row, 2), dtype=np.int64)
+    for first, pair in zip(joints["row"], joints["body"], strict=True):
+        row_bodies[first : first + 2] = pair
+    for r, kind, pair, jt in zip(
+        drivers["row"], drivers["kind"], drivers["body"], drivers["joint"], strict=True
+    ):
+        row_bodies[r] = pair if kind == DriverKind.ANGLE else joints["body"][jt]
     mass = np.array([b.mass for b in model.bodies], dtype=float)
     inertia = np.array([b.inertia for b in model.bodies], dtype=float)
     mechanism = Mechanism(
@@ -346,6 +378,11 @@ def build_system(model: Model, *, ideal: bool = False) -> System:
         force_param=_table(loads["param"], (3,), np.float64),
         baumgarte_alpha=float(model.solver.baumgarte_alpha),
         baumgarte_beta=float(model.solver.baumgarte_beta),
+        formulation=int(FORMULATIONS[model.solver.formulation]),
+        penalty=float(model.solver.penalty),
+        projection_tolerance=PROJECTION_TOLERANCE * _size(model),
+        redundant=False,
+        **build_pattern(row_bodies, len(model.bodies))._asdict(),
     )
     events = UserEvents(
         body=_table([index[e.body] for e in model.events], (), np.int64),

@@ -53,6 +53,15 @@ class Status(IntEnum):
     SINGULAR = 4
     MAX_STEPS = 5
     INTERRUPTED = 6
+    CONSTRAINT_DRIFT = 7  # the constraints drifted past solver.max_constraint_violation
+    ENERGY_DRIFT = 8  # a conservative mechanism's energy changed past solver.max_energy_error
+
+
+class Formulation(IntEnum):
+    """How the right-hand side meets the constraints (``kernels.dynamics``)."""
+
+    BAUMGARTE = 0  # the paper's Eq. (7): Lagrange multipliers with Baumgarte stabilisation
+    AUGMENTED_LAGRANGIAN = 1  # index-1 augmented Lagrangian with mass-orthogonal projections
 
 
 class EventDirection(IntEnum):

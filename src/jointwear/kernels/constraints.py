@@ -3,7 +3,7 @@
 | symbol | meaning | unit |
 |---|---|---|
 | phi | constraint values Phi | m or rad |
-| cq | Jacobian Phi_q (rows x 3 n_bodies) | 1, m |
+| cq | Jacobian Phi_q, by row: x, y, phi of its first body, then of its second (rows x 6) | 1, m |
 | gamma | right side of the acceleration equation Phi_q q'' = gamma (paper Eq. 3) | m/s^2, rad/s^2 |
 | phi_t | partial time derivative of Phi (drivers) | m/s, rad/s |
 
@@ -20,10 +20,10 @@ from .kinematics import angle, angular_velocity, point_position, point_velocity,
 
 
 @njit(cache=True, no_cpython_wrapper=True)
-def _add(cq, r, b, k, value):
-    """Add value at row r, coordinate k (0 x, 1 y, 2 phi) of body b (skipped for the ground)."""
+def _add(cq, r, side, b, k, value):
+    """Add value at row r, coordinate k (0 x, 1 y, 2 phi) of its side-0 or side-1 body b."""
     if b >= 0:
-        cq[r, 3 * b + k] += value
+        cq[r, 3 * side + k] += value
 
 
 @njit(cache=True, no_cpython_wrapper=True)
@@ -34,14 +34,14 @@ def _revolute(q, qd, i, j, s, r, phi, cq, gamma):
     pjx, pjy = point_position(q, j, s[1, 0], s[1, 1])
     phi[r] = pix - pjx
     phi[r + 1] = piy - pjy
-    _add(cq, r, i, 0, 1.0)
-    _add(cq, r, i, 2, -aiy)
-    _add(cq, r, j, 0, -1.0)
-    _add(cq, r, j, 2, ajy)
-    _add(cq, r + 1, i, 1, 1.0)
-    _add(cq, r + 1, i, 2, aix)
-    _add(cq, r + 1, j, 1, -1.0)
-    _add(cq, r + 1, j, 2, -ajx)
+    _add(cq, r, 0, i, 0, 1.0)
+    _add(cq, r, 0, i, 2, -aiy)
+    _add(cq, r, 1, j, 0, -1.0)
+    _add(cq, r, 1, j, 2, ajy)
+    _add(cq, r + 1, 0, i, 1, 1.0)
+    _add(cq, r + 1, 0, i, 2, aix)
+    _add(cq, r + 1, 1, j, 1, -1.0)
+    _add(cq, r + 1, 1, j, 2, -ajx)
     wi2 = angular_velocity(qd, i) ** 2
     wj2 = angular_velocity(qd, j) ** 2
     gamma[r] = aix * wi2 - ajx * wj2
@@ -63,12 +63,12 @@ def line_projection(q, qd, i, j, s, vx, vy, r, phi, cq, gamma):
     dx = pjx - pix
     dy = pjy - piy
     phi[r] = nx * dx + ny * dy
-    _add(cq, r, i, 0, -nx)
-    _add(cq, r, i, 1, -ny)
-    _add(cq, r, i, 2, -ny * dx + nx * dy - (nx * -aiy + ny * aix))
-    _add(cq, r, j, 0, nx)
-    _add(cq, r, j, 1, ny)
-    _add(cq, r, j, 2, nx * -ajy + ny * ajx)
+    _add(cq, r, 0, i, 0, -nx)
+    _add(cq, r, 0, i, 1, -ny)
+    _add(cq, r, 0, i, 2, -ny * dx + nx * dy - (nx * -aiy + ny * aix))
+    _add(cq, r, 1, j, 0, nx)
+    _add(cq, r, 1, j, 1, ny)
+    _add(cq, r, 1, j, 2, nx * -ajy + ny * ajx)
     wi = angular_velocity(qd, i)
     wj = angular_velocity(qd, j)
     vix, viy = point_velocity(q, qd, i, s[0, 0], s[0, 1])
@@ -97,8 +97,8 @@ def evaluate_constraints(t, q, qd, mech, phi, cq, gamma, phi_t):
             _revolute(q, qd, i, j, s, r, phi, cq, gamma)
         else:  # translational: relative angle, then the normal-to-axis projection
             phi[r] = angle(q, j) - angle(q, i) - mech.joint_angle0[jt]
-            _add(cq, r, i, 2, -1.0)
-            _add(cq, r, j, 2, 1.0)
+            _add(cq, r, 0, i, 2, -1.0)
+            _add(cq, r, 1, j, 2, 1.0)
             gamma[r] = 0.0
             ax = mech.joint_axis[jt, 0]
             ay = mech.joint_axis[jt, 1]
@@ -111,8 +111,8 @@ def evaluate_constraints(t, q, qd, mech, phi, cq, gamma, phi_t):
             i = mech.driver_body[d, 0]
             j = mech.driver_body[d, 1]
             phi[r] = angle(q, j) - angle(q, i) - f
-            _add(cq, r, i, 2, -1.0)
-            _add(cq, r, j, 2, 1.0)
+            _add(cq, r, 0, i, 2, -1.0)
+            _add(cq, r, 1, j, 2, 1.0)
             gamma[r] = fdd
         else:
             jt = mech.driver_joint[d]

@@ -1,47 +1,65 @@
-"""Small dense symmetric positive-definite solves, allocation-free.
+"""Sparse symmetric positive-definite solves in envelope (skyline) storage, allocation-free.
 
-For the few-by-few systems of planar mechanisms a hand-written Cholesky factorisation in
-place beats a LAPACK call, whose overhead dominates at these sizes, and it allocates nothing.
+Row i of a matrix in envelope storage holds its columns first[i] .. i (the lower triangle from
+the row's first non-zero to the diagonal) at a[ptr[i] : ptr[i] + i - first[i] + 1]. Cholesky
+factorisation fills nothing outside the envelope, so with the rows ordered for a narrow
+envelope (``pattern.py``) the cost is about size x width^2: linear in the size of a chain
+or a tree of bodies. George and Liu (1981), "Computer Solution of Large Sparse Positive
+Definite Systems", ch. 4. For the few-by-few systems of small mechanisms these hand-written
+loops also beat a LAPACK call, whose overhead dominates at those sizes.
 """
 
 import math
 
 from numba import njit
 
+PIVOT_TOLERANCE = 1e-13  # a pivot below this fraction of the largest diagonal is singular
+
 
 @njit(cache=True)
-def cholesky_solve(a, b, x):
-    """Solve a x = b for symmetric positive-definite a (m x m), overwriting a.
+def envelope_factor(first, ptr, a):
+    """Overwrite the envelope a with its Cholesky factor L (a = L L^T).
 
-    Returns False if a pivot is not positive relative to the diagonal (singular or redundant
-    constraints), True otherwise.
+    Returns False if a pivot is not positive relative to the largest diagonal entry (a
+    singular matrix: redundant constraints or a dead-centre position), True otherwise.
     """
-    m = b.shape[0]
+    size = first.shape[0]
     scale = 0.0
-    for i in range(m):
-        scale = max(scale, abs(a[i, i]))
-    tiny = 1e-13 * scale
-    for j in range(m):
-        d = a[j, j]
-        for k in range(j):
-            d -= a[j, k] * a[j, k]
+    for i in range(size):
+        scale = max(scale, abs(a[ptr[i] + i - first[i]]))
+    tiny = PIVOT_TOLERANCE * scale
+    for i in range(size):
+        fi = first[i]
+        row_i = ptr[i] - fi  # a[row_i + j] is entry (i, j)
+        for j in range(fi, i):
+            fj = first[j]
+            row_j = ptr[j] - fj
+            s = a[row_i + j]
+            for k in range(max(fi, fj), j):
+                s -= a[row_i + k] * a[row_j + k]
+            a[row_i + j] = s / a[row_j + j]
+        d = a[row_i + i]
+        for k in range(fi, i):
+            d -= a[row_i + k] * a[row_i + k]
         if not d > tiny:
             return False
-        d = math.sqrt(d)
-        a[j, j] = d
-        for i in range(j + 1, m):
-            s = a[i, j]
-            for k in range(j):
-                s -= a[i, k] * a[j, k]
-            a[i, j] = s / d
-    for i in range(m):  # forward: L z = b
-        s = b[i]
-        for k in range(i):
-            s -= a[i, k] * x[k]
-        x[i] = s / a[i, i]
-    for i in range(m - 1, -1, -1):  # backward: L^T x = z
-        s = x[i]
-        for k in range(i + 1, m):
-            s -= a[k, i] * x[k]
-        x[i] = s / a[i, i]
+        a[row_i + i] = math.sqrt(d)
     return True
+
+
+@njit(cache=True)
+def envelope_solve(first, ptr, factor, x):
+    """Solve L L^T x = b in place (x holds b on entry), L from ``envelope_factor``."""
+    size = first.shape[0]
+    for i in range(size):  # forward: L z = b
+        row_i = ptr[i] - first[i]
+        s = x[i]
+        for k in range(first[i], i):
+            s -= factor[row_i + k] * x[k]
+        x[i] = s / factor[row_i + i]
+    for i in range(size - 1, -1, -1):  # backward: L^T x = z, a column of L^T at a time
+        row_i = ptr[i] - first[i]
+        x[i] /= factor[row_i + i]
+        xi = x[i]
+        for k in range(first[i], i):
+            x[k] -= factor[row_i + k] * xi

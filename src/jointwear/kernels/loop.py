@@ -19,6 +19,11 @@ The loop knows three things, each behind its interface: the constrained system
   midpoint goes unseen; steps are short in contact.
 - After every accepted step the elements accumulate wear and totals from the step's midpoint.
 
+Constraints: after every accepted step ``dynamics.project`` reports the constraint violation
+the step ended with (and, in the augmented Lagrangian formulation, projects the state back
+onto the constraints). A violation above ``Control.max_violation`` ends the run with
+``Status.CONSTRAINT_DRIFT``: the motion may have left its assembly branch.
+
 Minimum step (SPEC sec. 2): when the error test fails at ``min_step`` the step is accepted
 anyway and counted in ``Counter.MIN_STEP_HITS``.
 """
@@ -31,7 +36,7 @@ from numba import njit
 
 from . import elements, integrate
 from .codes import Counter, EventDirection, Status
-from .dynamics import constraint_norm, rhs
+from .dynamics import project, rhs
 from .outputs import write_row
 
 EVENT_TIME_TOLERANCE = 1e-13  # relative bracket width at which a crossing is located [-]
@@ -50,6 +55,7 @@ class Control(NamedTuple):
     output_times: np.ndarray  # (rows,) times of the output rows [s], increasing
     rows_per_step: int  # most rows one step can produce (buffer reserve)
     snapshot_times: np.ndarray  # (ns,) times of the wear snapshots [s], increasing
+    max_violation: float  # a step ending with a larger 2-norm of Phi stops the run [m, rad]
 
 
 class UserEvents(NamedTuple):
@@ -68,7 +74,7 @@ class Log(NamedTuple):
     """
 
     counters: np.ndarray  # (N_COUNTERS,) int64, see Counter
-    max_violation: np.ndarray  # (1,) largest 2-norm of Phi after an accepted step
+    max_violation: np.ndarray  # (1,) largest 2-norm of Phi at a step's end, before projection
     event_time: np.ndarray  # (cap,) crossings logged during this chunk [s]
     event_index: np.ndarray  # (cap,) int64 event number
     event_rising: np.ndarray  # (cap,) int64 1 rising, 0 falling
@@ -340,11 +346,16 @@ def advance(problem, integ, events, ctl, log, scratch, out, t_stop, step_stop):
         if outcome < 0:
             return -outcome, rows
         counters[Counter.ACCEPTED] += 1
-        log.max_violation[0] = max(log.max_violation[0], constraint_norm(problem.dyn))
         y_new = integrate.current_state(integ)
         for i in range(y_new.shape[0]):
             if not math.isfinite(y_new[i]):
                 return Status.NON_FINITE, rows
+        violation = project(integrate.current_time(integ), y_new, problem)
+        if violation < 0.0:
+            return Status.SINGULAR, rows
+        log.max_violation[0] = max(log.max_violation[0], violation)
+        if violation > ctl.max_violation:
+            return Status.CONSTRAINT_DRIFT, rows
         h = integrate.current_time(integ) - t
         rows, ok = _after_step(problem, integ, events, ctl, log, scratch, out, rows, h)
         if not ok:

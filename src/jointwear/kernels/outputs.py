@@ -10,7 +10,8 @@ the elastic energy of their contacts; the 2-norm of the position constraints.
 from numba import njit
 
 from . import elements
-from .dynamics import constraint_norm, rhs
+from .codes import Formulation
+from .dynamics import constraint_norm, least_norm_multipliers, rhs
 from .forces import potential_energy
 
 
@@ -24,12 +25,12 @@ def kinetic_energy(qd, mech):
 
 
 @njit(cache=True, no_cpython_wrapper=True)
-def _reaction(dyn, mech, jt, b, k):
-    """Component k of the force that joint jt's two constraint rows apply to body b [N]."""
+def _reaction(dyn, mech, jt, side, k):
+    """Component k of the force joint jt's rows apply to its first (side 0) or second body [N]."""
     r0 = mech.joint_row[jt]
     force = 0.0
     for r in range(r0, r0 + 2):
-        force -= dyn.cq[r, 3 * b + k] * dyn.lam[r]
+        force -= dyn.cq[r, 3 * side + k] * dyn.lam[r]
     return force
 
 
@@ -39,6 +40,8 @@ def write_row(t, y, problem, ydot, row):
     ok = rhs(t, y, problem, ydot)
     mech = problem.mech
     dyn = problem.dyn
+    if ok and mech.redundant and mech.formulation == Formulation.AUGMENTED_LAGRANGIAN:
+        least_norm_multipliers(mech, dyn)
     n = mech.inv_mass.shape[0]
     row[0] = t
     c = 1
@@ -55,9 +58,9 @@ def write_row(t, y, problem, ydot, row):
         j = mech.joint_body[jt, 1]
         for k in range(2):
             if j >= 0:
-                row[c + k] = _reaction(dyn, mech, jt, j, k)
+                row[c + k] = _reaction(dyn, mech, jt, 1, k)
             else:  # action and reaction: the force on the ground is minus that on body i
-                row[c + k] = -_reaction(dyn, mech, jt, mech.joint_body[jt, 0], k)
+                row[c + k] = -_reaction(dyn, mech, jt, 0, k)
         c += 2
     c = elements.write_outputs(problem.elements, problem.scratch, row, c)
     row[c] = kinetic_energy(y[n:], mech)

@@ -10,7 +10,7 @@ from typing import Annotated, ClassVar, Literal
 from annotated_types import Ge, Gt, Le
 from pydantic import AfterValidator, Field, Strict, ValidationInfo, field_validator, model_validator
 
-from ..kernels.codes import DriverKind, ForceKind, JointKind, Method
+from ..kernels.codes import DriverKind, ForceKind, Formulation, JointKind, Method
 from ..units import (
     Acceleration2,
     Angle,
@@ -33,6 +33,10 @@ from .slide_clearance import SlideClearance
 from .tables import Name, Number, Table, one_of
 
 INTEGRATORS: dict[str, Method] = {"dopri5": Method.DOPRI5, "abm": Method.ABM}
+FORMULATIONS: dict[str, Formulation] = {
+    "baumgarte": Formulation.BAUMGARTE,
+    "augmented_lagrangian": Formulation.AUGMENTED_LAGRANGIAN,
+}
 MAX_OUTPUT_ROWS = 5e7  # about 16 GB of time series for a small mechanism
 MAX_WEAR_SNAPSHOTS = 10_000  # each holds every sector of every clearance joint
 
@@ -193,8 +197,12 @@ class Solver(Table):
     min_step: PositiveTime = 1e-12
     max_step: PositiveTime = 1e-3
     initial_step: PositiveTime = 1e-6
+    formulation: Annotated[str, one_of(FORMULATIONS, "formulation")] = "augmented_lagrangian"
+    penalty: Annotated[Number, Gt(0), Le(1e12)] = 1e6
     baumgarte_alpha: Annotated[Number, Ge(0)] = 5.0
     baumgarte_beta: Annotated[Number, Ge(0)] = 5.0
+    max_constraint_violation: Annotated[Number, Gt(0)] = 1e-3
+    max_energy_error: Annotated[Number, Gt(0)] = 1e-3
     output_interval: PositiveTime = 1e-4
     wear_snapshot_interval: PositiveTime | None = None  # default: a fifth of t_end
     t_end: PositiveTime = 1.0
