@@ -917,12 +917,16 @@ def test_relative_angle_driver(formulation):
     )
     t = col(df, "time")
     c0, c1, c2 = ELBOW
-    # Prescribed relative motion: Baumgarte-stabilised integration, REL of each scale.
+    # Prescribed relative motion: stabilised or projected integration, REL of each scale.
     rel = col(df, "phi_fore") - col(df, "phi_upper")
     assert_close(rel, c0 + c1 * t + c2 * t**2, scale=1.0)
     rel_rate = col(df, "omega_fore") - col(df, "omega_upper")
     assert_close(rel_rate, c1 + 2 * c2 * t, scale=2.0)
-    assert_close(col(df, "alpha_fore") - col(df, "alpha_upper"), 2 * c2, scale=6.0)
+    # The augmented Lagrangian meets each acceleration row to SETTLED (1e-10) of its terms,
+    # here |alpha_fore| + |alpha_upper| (a few hundred rad/s^2): REL of that scale instead.
+    alphas = np.abs(col(df, "alpha_fore")) + np.abs(col(df, "alpha_upper"))
+    scale = 6.0 if formulation == "baumgarte" else max(6.0, alphas.max())
+    assert_close(col(df, "alpha_fore") - col(df, "alpha_upper"), 2 * c2, scale=scale)
     assert col(df, "constraint_violation").max() < VIOLATION[formulation]
 
     # Newton-Euler on the forearm alone, from its own motion: the elbow pin force

@@ -20,13 +20,14 @@ from .assembly import assemble
 from .energy import EnergyMonitor
 from .interrupts import stop_requests
 from .kernels import loop
-from .kernels.codes import N_COUNTERS, Counter, Method, Status
+from .kernels.codes import N_COUNTERS, Counter, Formulation, Method, Status
 from .kernels.dynamics import Problem, make_dynamics_scratch
 from .kernels.elements import ElementLog, Elements, ElementScratch, ElementState, journal, slider
 from .kernels.integrate.abm import make_abm_state
 from .kernels.integrate.rk import DOPRI5, S_T, make_rk_state
 from .kernels.structs import StructProxy, to_struct
 from .model import Model, ModelError
+from .model.sections import FORMULATIONS
 from .results import Results
 from .results import slider as slider_results
 from .results.clearance import (
@@ -75,7 +76,7 @@ def _integrator(method: Method, n_state: int) -> object:
 
 
 def _kernel_arrays(
-    system: System, n_state: int, n_events: int, n_snapshots: int
+    system: System, formulation: Formulation, n_state: int, n_events: int, n_snapshots: int
 ) -> tuple[Problem, loop.Log, loop.Scratch, ElementState, ElementLog]:
     """The problem the right-hand side reads, the run's log and the loop's scratch.
 
@@ -95,7 +96,7 @@ def _kernel_arrays(
         elements=Elements(journal=to_struct(table), slider=to_struct(s_table)),
         state=ElementState(journal=to_struct(state), slider=to_struct(s_state)),
         scratch=ElementScratch(journal=to_struct(scratch), slider=to_struct(s_scratch)),
-        dyn=make_dynamics_scratch(system.mechanism),
+        dyn=make_dynamics_scratch(system.mechanism, formulation),
     )
     slots = system.journal_ints.shape[0] + slider.SLOTS * system.slider_ints.shape[0]
     # A step logs at most one crossing per event and one onset per slot: room for many steps.
@@ -180,7 +181,11 @@ def simulate(
     )
     integ = _integrator(solver.method, n_state)
     problem, log, scratch, states, element_logs = _kernel_arrays(
-        system, n_state, len(model.events), ctl.snapshot_times.shape[0]
+        system,
+        FORMULATIONS[solver.formulation],
+        n_state,
+        len(model.events),
+        ctl.snapshot_times.shape[0],
     )
     journals, sliders = states
     impacts: list[dict] = []

@@ -18,7 +18,6 @@ from .kernels.elements import slider as sc
 from .kernels.loop import UserEvents
 from .model import Model
 from .model.clearance import WEAR_DISTRIBUTIONS, Clearance, law_parameters
-from .model.sections import FORMULATIONS
 from .model.slide_clearance import SlideClearance
 from .pattern import build_pattern
 
@@ -54,7 +53,6 @@ class Mechanism(NamedTuple):
     force_param: NDArray[np.float64]  # (nl, 3) stiffness, damping, free length or angle
     baumgarte_alpha: float  # [1/s]
     baumgarte_beta: float  # [1/s]
-    formulation: int  # Formulation
     penalty: float  # augmented Lagrangian penalty, relative to each row's effective mass [-]
     projection_tolerance: float  # 2-norm of Phi (and Phi') the projections reach [m, rad]
     redundant: bool  # whether output rows need the least-norm multipliers (set by simulate)
@@ -378,7 +376,6 @@ def build_system(model: Model, *, ideal: bool = False) -> System:
         force_param=_table(loads["param"], (3,), np.float64),
         baumgarte_alpha=float(model.solver.baumgarte_alpha),
         baumgarte_beta=float(model.solver.baumgarte_beta),
-        formulation=int(FORMULATIONS[model.solver.formulation]),
         penalty=float(model.solver.penalty),
         projection_tolerance=PROJECTION_TOLERANCE * _size(model),
         redundant=False,

@@ -42,6 +42,11 @@ def _tree_stamped(base: type) -> type:
         def get_source_stamp(self) -> str:
             return STAMP
 
+        def get_disambiguator(self) -> str:
+            # In the file names too: numba unpickles an index before it compares stamps, and
+            # an index of older sources can name a class that no longer exists.
+            return f"{super().get_disambiguator()}-{STAMP[:12]}"
+
         @classmethod
         def from_function(cls, py_func, py_file):
             if not os.path.abspath(py_file).startswith(KERNELS + os.sep):

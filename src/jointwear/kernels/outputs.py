@@ -10,8 +10,7 @@ the elastic energy of their contacts; the 2-norm of the position constraints.
 from numba import njit
 
 from . import elements
-from .codes import Formulation
-from .dynamics import constraint_norm, least_norm_multipliers, rhs
+from .dynamics import constraint_norm, rhs, row_multipliers
 from .forces import potential_energy
 
 
@@ -40,8 +39,8 @@ def write_row(t, y, problem, ydot, row):
     ok = rhs(t, y, problem, ydot)
     mech = problem.mech
     dyn = problem.dyn
-    if ok and mech.redundant and mech.formulation == Formulation.AUGMENTED_LAGRANGIAN:
-        least_norm_multipliers(mech, dyn)
+    if ok:
+        row_multipliers(problem)
     n = mech.inv_mass.shape[0]
     row[0] = t
     c = 1

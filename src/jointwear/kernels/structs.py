@@ -17,7 +17,7 @@ from numba.core import cgutils
 from numba.core.errors import TypingError
 from numba.experimental import structref
 from numba.experimental.jitclass.base import imp_dtor
-from numba.extending import intrinsic
+from numba.extending import intrinsic, overload
 
 
 @structref.register
@@ -80,3 +80,18 @@ def _struct_from(typingctx, record):
 def to_struct(record):
     """A new struct with the fields of the named tuple ``record`` (arrays shared)."""
     return _struct_from(record)
+
+
+def by_kind(stub: object, implementations: dict) -> object:
+    """Make ``stub`` dispatch, when compiled, to implementations[kind of its first argument].
+
+    The choice is made by type at compile time: a run compiles only the implementation its
+    tables call for, and the compiled code does not branch on it.
+    """
+
+    @overload(stub)
+    def _dispatch(first, *args):
+        function = implementations[kind_of(first)]
+        return lambda first, *args: function(first, *args)
+
+    return stub

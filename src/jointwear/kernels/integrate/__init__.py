@@ -20,11 +20,10 @@ method and a run compiles only the method it uses. The contract, for a method mo
 import math
 
 from numba import njit
-from numba.extending import overload
 
 from ..codes import Counter, Status
 from ..dynamics import rhs
-from ..structs import kind_of
+from ..structs import by_kind
 from .abm import (
     S_H,
     S_HOLD,
@@ -160,27 +159,6 @@ _METHODS = {
 }
 
 
-def _implementation(name):
-    """The overload of interface function ``name``: the method module's, by state type."""
-
-    def choose(st, *args):
-        return _METHODS[kind_of(st)][name]
-
-    return choose
-
-
-def _interface(name, stub):
-    """Register ``stub`` as interface function ``name`` (compiled by the state's type)."""
-    pick = _implementation(name)
-
-    @overload(stub)
-    def _dispatch(st, *args):
-        function = pick(st, *args)
-        return lambda st, *args: function(st, *args)
-
-    return stub
-
-
 def start(st, t, y, f0, h):
     """Begin at (t [s], y), f0 = f(t, y), first step h [s]."""
 
@@ -213,17 +191,11 @@ def current_state(st):
     """State reached (a view of the integrator's array)."""
 
 
-for _name, _stub in {
-    "start": start,
-    "restart": restart,
-    "attempt": attempt,
-    "step_start": step_start,
-    "interpolate": interpolate,
-    "interpolate_ends": interpolate_ends,
-}.items():
-    _interface(_name, _stub)
 for _methods in _METHODS.values():
     _methods["current_time"] = _time
     _methods["current_state"] = _state
-_interface("current_time", current_time)
-_interface("current_state", current_state)
+for _stub in (
+    start, restart, attempt, step_start, interpolate, interpolate_ends, current_time,
+    current_state,
+):  # fmt: skip
+    by_kind(_stub, {kind: methods[_stub.__name__] for kind, methods in _METHODS.items()})

@@ -1,0 +1,285 @@
+"""Index-1 augmented Lagrangian with mass-orthogonal projections.
+
+Bayo, Garcia de Jalon and Serna (1988); Garcia de Jalon and Bayo (1994), sec. 5.3:
+
+    (M + Phi_q^T W Phi_q) q''_k+1 = g - Phi_q^T (lam_k - W gamma),
+    lam_k+1 = lam_k + W (Phi_q q''_k+1 - gamma),  lam_0 = 0,
+
+until every row's residual, or the change of q'', is below SETTLED of its size; M q'' = g -
+Phi_q^T lam holds at every iterate. The leading matrix is
+positive definite whatever the rank of Phi_q, so singular positions and redundant
+constraints pass. W is diagonal, w_r = penalty / (Phi_q,r M^-1 Phi_q,r^T): each row's penalty
+relative to its own effective mass. After every step ``project`` moves the positions, then
+the velocities, back onto the constraints by M-orthogonal corrections
+(M + Phi_q^T W Phi_q) dq = -Phi_q^T W Phi (Bayo and Ledesma 1996), to the mechanism's
+projection tolerance; no Baumgarte terms are needed. Near singular positions a residue of
+1e-10 m grows, crossing after crossing, into a jump of assembly branch; one of 1e-13 m of the
+mechanism's size does not (tests/test_singular_redundant.py).
+"""
+
+from typing import NamedTuple
+
+import numpy as np
+from numba import njit
+
+from ..constraints import evaluate_constraints
+from ..jacobian import ENTRIES, add_transpose_product, norm, row_dot
+from ..linalg import envelope_factor, envelope_solve
+
+MAX_ITERATIONS = 30  # iterations per evaluation
+SETTLED = 1e-10  # iterations stop at residuals, or changes of q'', this fraction of their size
+GRAM_SHIFT = 1e-10  # regularisation of Phi_q^T Phi_q in row_multipliers [-]
+MAX_PROJECTIONS = 5  # corrections per projection of positions, and of velocities
+
+
+class AugmentedScratch(NamedTuple):
+    """Arrays of one evaluation (m constraint rows, n coordinates)."""
+
+    g: np.ndarray  # (n,) generalised applied forces [N, N m]
+    phi: np.ndarray  # (m,) Phi [m, rad]
+    cq: np.ndarray  # (m, 6) Jacobian entries (jacobian.py)
+    gamma: np.ndarray  # (m,) right side of Phi_q q'' = gamma
+    phi_t: np.ndarray  # (m,) partial time derivative of Phi
+    lam: np.ndarray  # (m,) Lagrange multipliers [N, N m]
+    force: np.ndarray  # (n,) Phi_q^T lam after an evaluation; scratch within one
+    x_rows: np.ndarray  # (m,) a row vector
+    weight: np.ndarray  # (m,) penalties w_r
+    qdd: np.ndarray  # (n,) accelerations of the last iterate
+    x_coords: np.ndarray  # (n,) a coordinate vector in envelope order
+    lead: np.ndarray  # M + Phi_q^T W Phi_q in envelope storage, or its factor
+    evaluated: np.ndarray  # (1 + 2n,) time [s] and state the factor in lead belongs to
+
+
+def make_scratch(n: int, m: int, mech: NamedTuple) -> AugmentedScratch:
+    """Allocate the scratch of n coordinates and m rows of ``system.Mechanism`` (Python)."""
+    return AugmentedScratch(
+        g=np.zeros(n),
+        phi=np.zeros(m),
+        cq=np.zeros((m, ENTRIES)),
+        gamma=np.zeros(m),
+        phi_t=np.zeros(m),
+        lam=np.zeros(m),
+        force=np.zeros(n),
+        x_rows=np.zeros(m),
+        weight=np.zeros(m),
+        qdd=np.zeros(n),
+        x_coords=np.zeros(n),
+        lead=np.zeros(mech.coord_ptr[-1]),
+        evaluated=np.full(1 + 2 * n, np.nan),
+    )
+
+
+@njit(cache=True, no_cpython_wrapper=True)
+def _diagonal(mech, c):
+    """Flat index in lead of coordinate c's diagonal entry."""
+    i = mech.coord_order[c]
+    return mech.coord_ptr[i] + i - mech.coord_first[i]
+
+
+@njit(cache=True, no_cpython_wrapper=True)
+def _factor_rows(mech, wk):
+    """Add Phi_q^T W Phi_q (W = wk.weight) to the diagonal in wk.lead, and factor it."""
+    cq = wk.cq
+    lead = wk.lead
+    for r in range(wk.phi.shape[0]):
+        w = wk.weight[r]
+        for e1 in range(ENTRIES):
+            for e2 in range(ENTRIES):
+                at = mech.row_entry_pairs[r, ENTRIES * e1 + e2]
+                if at >= 0:
+                    lead[at] += w * cq[r, e1] * cq[r, e2]
+    return envelope_factor(mech.coord_first, mech.coord_ptr, lead)
+
+
+@njit(cache=True, no_cpython_wrapper=True)
+def _factor_lead(mech, wk):
+    """Penalties w_r and the factor of M + Phi_q^T W Phi_q. False if not positive definite."""
+    wk.lead[:] = 0.0
+    for c in range(mech.inv_mass.shape[0]):
+        wk.lead[_diagonal(mech, c)] = 1.0 / mech.inv_mass[c]
+    for r in range(wk.phi.shape[0]):
+        inverse_mass = 0.0
+        for e in range(ENTRIES):
+            col = mech.row_coord[r, e]
+            if col >= 0:
+                inverse_mass += wk.cq[r, e] * wk.cq[r, e] * mech.inv_mass[col]
+        wk.weight[r] = mech.penalty / inverse_mass if inverse_mass > 0.0 else 0.0
+    return _factor_rows(mech, wk)
+
+
+@njit(cache=True, no_cpython_wrapper=True)
+def _solve_lead(mech, wk, force, coef, out):
+    """Out = (M + Phi_q^T W Phi_q)^-1 (force + Phi_q^T coef), with the factored lead."""
+    x = wk.x_coords
+    for c in range(force.shape[0]):
+        x[mech.coord_order[c]] = force[c]
+    for r in range(coef.shape[0]):
+        for e in range(ENTRIES):
+            col = mech.row_coord[r, e]
+            if col >= 0:
+                x[mech.coord_order[col]] += wk.cq[r, e] * coef[r]
+    envelope_solve(mech.coord_first, mech.coord_ptr, wk.lead, x)
+    for c in range(force.shape[0]):
+        out[c] = x[mech.coord_order[c]]
+
+
+@njit(cache=True, no_cpython_wrapper=True)
+def solve(wk, t, y, mech):
+    """Iterations for lam (and q'' in wk.qdd), target c = gamma. False if they fail."""
+    if not _factor_lead(mech, wk):
+        return False
+    m = wk.phi.shape[0]
+    n = wk.qdd.shape[0]
+    cq = wk.cq
+    row_coord = mech.row_coord
+    coef = wk.x_rows  # W c - lam, row by row
+    previous = wk.force
+    for r in range(m):
+        wk.lam[r] = 0.0
+    for _ in range(MAX_ITERATIONS):
+        for r in range(m):
+            coef[r] = wk.weight[r] * wk.gamma[r] - wk.lam[r]
+        for c in range(n):
+            previous[c] = wk.qdd[c]
+        _solve_lead(mech, wk, wk.g, coef, wk.qdd)
+        change = 0.0
+        size = 0.0
+        for c in range(n):
+            change = max(change, abs(wk.qdd[c] - previous[c]))
+            size = max(size, abs(wk.qdd[c]))
+        met = True  # every row's residual Phi_q,r q'' - gamma_r within SETTLED of its terms
+        for r in range(m):
+            residual = -wk.gamma[r]
+            terms = abs(wk.gamma[r])
+            for e in range(ENTRIES):
+                col = row_coord[r, e]
+                if col >= 0:
+                    term = cq[r, e] * wk.qdd[col]
+                    residual += term
+                    terms += abs(term)
+            wk.lam[r] += wk.weight[r] * residual
+            met &= abs(residual) <= SETTLED * terms
+        if met or change <= SETTLED * size:  # the second: redundant rows, inconsistent gamma
+            break
+    wk.evaluated[0] = t
+    wk.evaluated[1:] = y
+    return True
+
+
+@njit(cache=True, no_cpython_wrapper=True)
+def row_multipliers(wk, mech):
+    """With redundant constraints, lam becomes the least-norm set with the same Phi_q^T lam.
+
+    With redundant constraints only Phi_q^T lam, the force on the bodies, is determined; the
+    iterations leave lam with an arbitrary part that applies none (round-off inconsistencies
+    of c, times w). The least-norm set (Moore-Penrose) is lam = Phi_q z with
+    (Phi_q^T Phi_q) z = Phi_q^T lam, found by iterations preconditioned with the factor of
+    Phi_q^T Phi_q + eps I, eps = GRAM_SHIFT of its largest diagonal. The evaluation's factor
+    is overwritten.
+    """
+    if not mech.redundant:
+        return
+    n = mech.inv_mass.shape[0]
+    m = wk.phi.shape[0]
+    f = wk.g  # the evaluation is done with g: it holds the target force Phi_q^T lam
+    f[:] = 0.0
+    add_transpose_product(mech, wk.cq, wk.lam, f)
+    wk.lead[:] = 0.0
+    for r in range(m):
+        wk.weight[r] = 1.0
+        for e in range(ENTRIES):
+            col = mech.row_coord[r, e]
+            if col >= 0:
+                wk.lead[_diagonal(mech, col)] += wk.cq[r, e] * wk.cq[r, e]
+    shift = 0.0
+    for c in range(n):
+        shift = max(shift, GRAM_SHIFT * wk.lead[_diagonal(mech, c)])
+    wk.lead[:] = 0.0
+    for c in range(n):
+        wk.lead[_diagonal(mech, c)] = max(shift, 1e-300)
+    wk.evaluated[0] = np.nan  # the factor is no longer the evaluation's
+    if not _factor_rows(mech, wk):
+        return
+    z = wk.force
+    z[:] = 0.0
+    for _ in range(MAX_ITERATIONS):
+        for r in range(m):  # residual f - Phi_q^T Phi_q z
+            wk.x_rows[r] = -row_dot(mech, wk.cq, r, z)
+        _solve_lead(mech, wk, f, wk.x_rows, wk.qdd)
+        change = 0.0
+        size = 0.0
+        for c in range(n):
+            z[c] += wk.qdd[c]
+            change = max(change, abs(wk.qdd[c]))
+            size = max(size, abs(z[c]))
+        if change <= SETTLED * size:
+            break
+    for r in range(m):
+        wk.lam[r] = row_dot(mech, wk.cq, r, z)
+
+
+@njit(cache=True, no_cpython_wrapper=True)
+def _evaluated_at(wk, t, y):
+    """Whether the last evaluation (and its factor) was at time t [s] and state y."""
+    return wk.evaluated[0] == t and np.array_equal(wk.evaluated[1:], y)
+
+
+@njit(cache=True, no_cpython_wrapper=True)
+def _velocity_violation(mech, wk, qd):
+    """Phi' = Phi_q q' + Phi_t into wk.x_rows; returns its 2-norm [m/s, rad/s]."""
+    for r in range(wk.phi.shape[0]):
+        wk.x_rows[r] = wk.phi_t[r] + row_dot(mech, wk.cq, r, qd)
+    return norm(wk.x_rows)
+
+
+@njit(cache=True, no_cpython_wrapper=True)
+def _correct(mech, wk, v, violation):
+    """Add to v the M-orthogonal correction toward Phi_q dv = -violation (lead factored)."""
+    coef = wk.x_rows
+    for r in range(coef.shape[0]):
+        coef[r] = -wk.weight[r] * violation[r]
+    wk.force[:] = 0.0
+    _solve_lead(mech, wk, wk.force, coef, wk.qdd)
+    for c in range(v.shape[0]):
+        v[c] += wk.qdd[c]
+
+
+@njit(cache=True, no_cpython_wrapper=True)
+def project(wk, t, y, mech):
+    """The 2-norm of Phi the step ended with [m, rad]; then y is moved onto Phi = 0, Phi' = 0.
+
+    Positions, then velocities, take M-orthogonal corrections until their violation is below
+    the projection tolerance (the same number in m/s and rad/s for the velocities). The
+    factor of the step's last evaluation serves all corrections when that was at y, as the
+    integrators' last evaluation is. Returns -1 if the leading matrix could not be factored.
+    """
+    n = mech.inv_mass.shape[0]
+    q = y[:n]
+    qd = y[n:]
+    factored = _evaluated_at(wk, t, y)
+    if not factored:
+        evaluate_constraints(t, q, qd, mech, wk.phi, wk.cq, wk.gamma, wk.phi_t)
+    before = norm(wk.phi)
+    tol = mech.projection_tolerance
+    violation = before
+    for _ in range(MAX_PROJECTIONS):
+        if violation <= tol:
+            break
+        if not factored:
+            if not _factor_lead(mech, wk):
+                return -1.0
+            factored = True
+        _correct(mech, wk, q, wk.phi)
+        wk.evaluated[0] = np.nan
+        evaluate_constraints(t, q, qd, mech, wk.phi, wk.cq, wk.gamma, wk.phi_t)
+        violation = norm(wk.phi)
+    for _ in range(MAX_PROJECTIONS):
+        if _velocity_violation(mech, wk, qd) <= tol:  # the same number in m/s and rad/s
+            break
+        if not factored:
+            if not _factor_lead(mech, wk):
+                return -1.0
+            factored = True
+        _correct(mech, wk, qd, wk.x_rows)
+        wk.evaluated[0] = np.nan
+    return before

@@ -1,0 +1,88 @@
+"""The paper's Eq. (7): Lagrange multipliers with Baumgarte stabilisation.
+
+[[M, Phi_q^T], [Phi_q, 0]] [q''; lam] = [g; c], c = gamma - 2 alpha Phi' - beta^2 Phi, is
+solved by its Schur complement, M being diagonal: (Phi_q M^-1 Phi_q^T) lam = Phi_q M^-1 g - c.
+Baumgarte (1972); Nikravesh (1988) sec. 13. The Schur complement loses rank with Phi_q, at
+dead-centre positions and with redundant constraints: the solve then reports a singular
+system. The state is never projected: the Baumgarte terms hold the drift.
+"""
+
+from typing import NamedTuple
+
+import numpy as np
+from numba import njit
+
+from ..jacobian import ENTRIES, norm
+from ..linalg import envelope_factor, envelope_solve
+
+
+class BaumgarteScratch(NamedTuple):
+    """Arrays of one evaluation (m constraint rows, n coordinates)."""
+
+    g: np.ndarray  # (n,) generalised applied forces [N, N m]
+    phi: np.ndarray  # (m,) Phi [m, rad]
+    cq: np.ndarray  # (m, 6) Jacobian entries (jacobian.py)
+    gamma: np.ndarray  # (m,) right side of Phi_q q'' = gamma
+    phi_t: np.ndarray  # (m,) partial time derivative of Phi
+    lam: np.ndarray  # (m,) Lagrange multipliers [N, N m]
+    force: np.ndarray  # (n,) Phi_q^T lam after an evaluation; scratch within one
+    x_rows: np.ndarray  # (m,) a row vector in envelope order
+    schur: np.ndarray  # Phi_q M^-1 Phi_q^T in envelope storage
+
+
+def make_scratch(n: int, m: int, mech: NamedTuple) -> BaumgarteScratch:
+    """Allocate the scratch of n coordinates and m rows of ``system.Mechanism`` (Python)."""
+    return BaumgarteScratch(
+        g=np.zeros(n),
+        phi=np.zeros(m),
+        cq=np.zeros((m, ENTRIES)),
+        gamma=np.zeros(m),
+        phi_t=np.zeros(m),
+        lam=np.zeros(m),
+        force=np.zeros(n),
+        x_rows=np.zeros(m),
+        schur=np.zeros(mech.row_ptr[-1]),
+    )
+
+
+@njit(cache=True, no_cpython_wrapper=True)
+def solve(wk, t, y, mech):
+    """Lam from the Schur complement; False if it is singular."""
+    inv_mass = mech.inv_mass
+    row_coord = mech.row_coord
+    n = inv_mass.shape[0]
+    qd = y[n:]
+    cq = wk.cq
+    g = wk.g
+    schur = wk.schur
+    a2 = 2.0 * mech.baumgarte_alpha
+    b2 = mech.baumgarte_beta * mech.baumgarte_beta
+    schur[:] = 0.0
+    pairs = mech.row_pairs
+    for p in range(pairs.shape[0]):
+        r1, e1, r2, e2, col = pairs[p, 1], pairs[p, 2], pairs[p, 3], pairs[p, 4], pairs[p, 5]
+        schur[pairs[p, 0]] += cq[r1, e1] * inv_mass[col] * cq[r2, e2]
+    for r in range(wk.phi.shape[0]):
+        b = b2 * wk.phi[r] - wk.gamma[r] + a2 * wk.phi_t[r]
+        for e in range(ENTRIES):
+            col = row_coord[r, e]
+            if col >= 0:
+                b += cq[r, e] * (inv_mass[col] * g[col] + a2 * qd[col])
+        wk.x_rows[mech.row_order[r]] = b
+    if not envelope_factor(mech.row_first, mech.row_ptr, wk.schur):
+        return False
+    envelope_solve(mech.row_first, mech.row_ptr, wk.schur, wk.x_rows)
+    for r in range(wk.phi.shape[0]):
+        wk.lam[r] = wk.x_rows[mech.row_order[r]]
+    return True
+
+
+@njit(cache=True, no_cpython_wrapper=True)
+def project(wk, t, y, mech):
+    """The 2-norm of Phi at the step's end, from its last evaluation there [m, rad]."""
+    return norm(wk.phi)
+
+
+@njit(cache=True, no_cpython_wrapper=True)
+def row_multipliers(wk, mech):
+    """Lam as solved: unique, the constraints being independent."""
