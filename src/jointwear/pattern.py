@@ -32,6 +32,7 @@ class Pattern(NamedTuple):
     coord_order: NDArray[np.int64]  # (n,) position of each coordinate in the mass envelope
     coord_first: NDArray[np.int64]  # (n,)
     coord_ptr: NDArray[np.int64]  # (n + 1,)
+    coord_diagonal: NDArray[np.int64]  # (n,) envelope index of each coordinate's diagonal
     row_entry_pairs: NDArray[np.int64]  # (m, 36) envelope index of entries e1, e2, or -1
 
 
@@ -139,5 +140,8 @@ def build_pattern(row_bodies: NDArray[np.int64], n_bodies: int) -> Pattern:
         coord_order=coord_order,
         coord_first=coord_first,
         coord_ptr=coord_ptr,
+        coord_diagonal=np.array(
+            [_index(coord_first, coord_ptr, i, i) for i in coord_order], dtype=np.int64
+        ),
         row_entry_pairs=row_entry_pairs,
     )

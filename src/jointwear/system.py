@@ -65,6 +65,7 @@ class Mechanism(NamedTuple):
     coord_order: NDArray[np.int64]
     coord_first: NDArray[np.int64]
     coord_ptr: NDArray[np.int64]
+    coord_diagonal: NDArray[np.int64]
     row_entry_pairs: NDArray[np.int64]
 
 

@@ -70,22 +70,17 @@ def make_scratch(n: int, m: int, mech: NamedTuple) -> AugmentedScratch:
 
 
 @njit(cache=True, no_cpython_wrapper=True)
-def _diagonal(mech, c):
-    """Flat index in lead of coordinate c's diagonal entry."""
-    i = mech.coord_order[c]
-    return mech.coord_ptr[i] + i - mech.coord_first[i]
-
-
-@njit(cache=True, no_cpython_wrapper=True)
 def _factor_rows(mech, wk):
     """Add Phi_q^T W Phi_q (W = wk.weight) to the diagonal in wk.lead, and factor it."""
     cq = wk.cq
     lead = wk.lead
-    for r in range(wk.phi.shape[0]):
-        w = wk.weight[r]
+    weight = wk.weight
+    pairs = mech.row_entry_pairs
+    for r in range(weight.shape[0]):
+        w = weight[r]
         for e1 in range(ENTRIES):
             for e2 in range(ENTRIES):
-                at = mech.row_entry_pairs[r, ENTRIES * e1 + e2]
+                at = pairs[r, ENTRIES * e1 + e2]
                 if at >= 0:
                     lead[at] += w * cq[r, e1] * cq[r, e2]
     return envelope_factor(mech.coord_first, mech.coord_ptr, lead)
@@ -94,15 +89,19 @@ def _factor_rows(mech, wk):
 @njit(cache=True, no_cpython_wrapper=True)
 def _factor_lead(mech, wk):
     """Penalties w_r and the factor of M + Phi_q^T W Phi_q. False if not positive definite."""
+    inv_mass = mech.inv_mass
+    row_coord = mech.row_coord
+    diagonal = mech.coord_diagonal
+    cq = wk.cq
     wk.lead[:] = 0.0
-    for c in range(mech.inv_mass.shape[0]):
-        wk.lead[_diagonal(mech, c)] = 1.0 / mech.inv_mass[c]
-    for r in range(wk.phi.shape[0]):
+    for c in range(inv_mass.shape[0]):
+        wk.lead[diagonal[c]] = 1.0 / inv_mass[c]
+    for r in range(wk.weight.shape[0]):
         inverse_mass = 0.0
         for e in range(ENTRIES):
-            col = mech.row_coord[r, e]
+            col = row_coord[r, e]
             if col >= 0:
-                inverse_mass += wk.cq[r, e] * wk.cq[r, e] * mech.inv_mass[col]
+                inverse_mass += cq[r, e] * cq[r, e] * inv_mass[col]
         wk.weight[r] = mech.penalty / inverse_mass if inverse_mass > 0.0 else 0.0
     return _factor_rows(mech, wk)
 
@@ -111,16 +110,19 @@ def _factor_lead(mech, wk):
 def _solve_lead(mech, wk, force, coef, out):
     """Out = (M + Phi_q^T W Phi_q)^-1 (force + Phi_q^T coef), with the factored lead."""
     x = wk.x_coords
+    order = mech.coord_order
+    row_coord = mech.row_coord
+    cq = wk.cq
     for c in range(force.shape[0]):
-        x[mech.coord_order[c]] = force[c]
+        x[order[c]] = force[c]
     for r in range(coef.shape[0]):
         for e in range(ENTRIES):
-            col = mech.row_coord[r, e]
+            col = row_coord[r, e]
             if col >= 0:
-                x[mech.coord_order[col]] += wk.cq[r, e] * coef[r]
+                x[order[col]] += cq[r, e] * coef[r]
     envelope_solve(mech.coord_first, mech.coord_ptr, wk.lead, x)
     for c in range(force.shape[0]):
-        out[c] = x[mech.coord_order[c]]
+        out[c] = x[order[c]]
 
 
 @njit(cache=True, no_cpython_wrapper=True)
@@ -190,13 +192,13 @@ def row_multipliers(wk, mech):
         for e in range(ENTRIES):
             col = mech.row_coord[r, e]
             if col >= 0:
-                wk.lead[_diagonal(mech, col)] += wk.cq[r, e] * wk.cq[r, e]
+                wk.lead[mech.coord_diagonal[col]] += wk.cq[r, e] * wk.cq[r, e]
     shift = 0.0
     for c in range(n):
-        shift = max(shift, GRAM_SHIFT * wk.lead[_diagonal(mech, c)])
+        shift = max(shift, GRAM_SHIFT * wk.lead[mech.coord_diagonal[c]])
     wk.lead[:] = 0.0
     for c in range(n):
-        wk.lead[_diagonal(mech, c)] = max(shift, 1e-300)
+        wk.lead[mech.coord_diagonal[c]] = max(shift, 1e-300)
     wk.evaluated[0] = np.nan  # the factor is no longer the evaluation's
     if not _factor_rows(mech, wk):
         return
