@@ -439,3 +439,20 @@ def test_signal_ends_the_run_cleanly_with_partial_results(tmp_path, signum):
     assert np.isfinite(results.timeseries.to_numpy()).all()
     csv = pd.read_csv(out / "timeseries.csv")
     assert csv.shape == results.timeseries.shape
+
+
+def test_check_reports_redundant_constraints_by_formulation(tmp_path):
+    # The pendulum with a second pin at its pivot: 4 equations of rank 2.
+    path = tmp_path / "double_pin.toml"
+    path.write_text(
+        PENDULUM.read_text()
+        + '\n[[joints]]\nname = "pin2"\ntype = "revolute"\nbodies = ["ground", "pendulum"]\n'
+        'points = ["pivot", "pivot"]\n'
+    )
+    result = invoke("check", path, env={"COLUMNS": "200"})
+    assert result.exit_code == 0, result.output
+    assert "degrees of freedom: 1 (joints only), 1 with drivers" in result.stdout
+    assert "redundant constraints: 2 equation(s) depend on others" in result.stdout
+    refused = invoke("check", path, "--set", "solver.formulation=baumgarte", env=NARROW)
+    (line,) = assert_clean_failure(refused)
+    assert "rank 2 for 4 equations" in line and "augmented_lagrangian" in line

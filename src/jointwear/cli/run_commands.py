@@ -168,6 +168,11 @@ def check(model: ModelPath, overrides: Overrides = None) -> None:
     out.print(
         f"assembled in {assembly.iterations} Newton iterations, residual {assembly.residual:.2e}"
     )
+    if assembly.redundant:
+        out.print(
+            f"redundant constraints: {assembly.redundant} equation(s) depend on others; the "
+            "reactions reported are the least-norm set (docs/model-format.md, Formulations)"
+        )
     table = Table(title="initial pose")
     for column in ("body", "x [m]", "y [m]", "phi [deg]", "vx [m/s]", "vy [m/s]", "omega [rad/s]"):
         table.add_column(escape(column), justify="right")
