@@ -22,6 +22,7 @@ from .system import System, constraint_count, initial_guess
 
 MAX_ITERATIONS = 50
 RANK_TOLERANCE = 1e-9
+VELOCITY_RATE = 1.0  # velocity equations are met to the position tolerance per second [1/s]
 
 
 @dataclass(frozen=True)
@@ -122,6 +123,17 @@ def assemble(model: Model, system: System, tolerance: float | None = None) -> As
     if rank < cq.shape[0] and model.solver.formulation == "baumgarte":
         raise ModelError([_redundancy_message(cq, labels)])
     qd -= np.linalg.lstsq(cq, cq @ qd + phi_t, rcond=None)[0]
+    velocity_residual = np.abs(cq @ qd + phi_t)
+    if np.max(velocity_residual, initial=0.0) > tol * VELOCITY_RATE:
+        worst = np.argsort(-velocity_residual)[:3]
+        unmet = "; ".join(f"{labels[i]} off by {velocity_residual[i]:.3g}" for i in worst)
+        raise ModelError(
+            [
+                "assembly: the constraints' velocity equations contradict each other "
+                f"({unmet} per second): redundant drivers or joints that prescribe different "
+                "motions; make them agree or remove one"
+            ]
+        )
     joint_rows = 2 * system.mechanism.joint_kind.shape[0]
     return Assembly(
         y0=np.concatenate([q, qd]),

@@ -15,6 +15,7 @@ import numpy as np
 from .model import Model
 
 ENERGY_FLOOR = 1e-12  # energy scale below which changes are not judged [J]
+ROUNDING = 1e3 * np.finfo(float).eps  # of the energies' magnitude: changes by rounding [-]
 
 
 def not_conservative(model: Model) -> str | None:
@@ -34,7 +35,9 @@ def not_conservative(model: Model) -> str | None:
 class EnergyMonitor:
     """The largest change of kinetic plus potential energy, relative to the run's scale.
 
-    The scale is the largest kinetic energy plus the range of the potential energy seen.
+    The scale is the largest kinetic energy plus the range of the potential energy seen. A
+    change within ROUNDING of the energies' magnitude is rounding, whatever the scale (a small
+    swing far from the potential's zero).
     """
 
     def __init__(self, model: Model, columns: list[str]) -> None:
@@ -47,6 +50,7 @@ class EnergyMonitor:
         self.time_exceeded: float | None = None
         self._kinetic_max = 0.0
         self._potential_range = [np.inf, -np.inf]
+        self._magnitude = 0.0
 
     @property
     def scale(self) -> float:
@@ -67,7 +71,8 @@ class EnergyMonitor:
         self._potential_range = [min(low, potential.min()), max(high, potential.max())]
         change = np.abs(total - self.initial)
         self.max_change = max(self.max_change, float(change.max()))
-        limit = self.bound * max(self.scale, ENERGY_FLOOR)
+        self._magnitude = max(self._magnitude, float((np.abs(kinetic) + np.abs(potential)).max()))
+        limit = self.bound * max(self.scale, ENERGY_FLOOR) + ROUNDING * self._magnitude
         if self.time_exceeded is None and self.max_change > limit:
             self.time_exceeded = float(rows[int(np.argmax(change > limit)), 0])
         return self.time_exceeded is not None

@@ -45,17 +45,20 @@ _MESSAGES = {
     Status.SUCCESS: "reached the end time",
     Status.NON_FINITE: "the state became non-finite (NaN or inf) at the minimum step; check "
     "forces and stiffness, or try tighter tolerances or a smaller solver.max_step",
-    Status.SINGULAR: "the constraint Jacobian became singular (a dead-centre or lock-up "
-    "position); check the geometry and the drivers, or use solver.formulation = "
-    "'augmented_lagrangian', which passes singular positions",
+    Status.SINGULAR: "the constraint equations could not be solved: with formulation "
+    "'baumgarte' the Jacobian became singular (a dead-centre position or redundant "
+    "constraints, which 'augmented_lagrangian' passes); with 'augmented_lagrangian' its "
+    "iterations did not settle (masses and inertias of very different sizes, or "
+    "solver.penalty too low); check the geometry and the drivers",
     Status.MAX_STEPS: "solver.max_steps was reached; raise it or loosen the tolerances",
     Status.INTERRUPTED: "interrupted by the user; the results hold what was computed so far",
-    Status.CONSTRAINT_DRIFT: "the joint constraints drifted past solver.max_constraint_violation "
-    "(the motion may have left its assembly branch, as at a dead-centre or flat position); try "
-    "solver.formulation = 'augmented_lagrangian', or tighter tolerances",
+    Status.CONSTRAINT_DRIFT: "the joint constraints drifted past "
+    "solver.max_constraint_violation (the motion may have left its assembly branch, as at a "
+    "dead-centre or flat position, or the drivers contradict the joints); with formulation "
+    "'baumgarte' try 'augmented_lagrangian', or tighter tolerances",
     Status.ENERGY_DRIFT: "the energy of this conservative mechanism changed by more than "
     "solver.max_energy_error of its scale (summary.json, 'energy'): the motion has probably "
-    "left its assembly branch at a singular position; try solver.formulation = "
+    "left its assembly branch at a singular position; with formulation 'baumgarte' try "
     "'augmented_lagrangian', or tighter tolerances",
 }
 

@@ -13,21 +13,23 @@ import math
 
 from numba import njit
 
-PIVOT_TOLERANCE = 1e-13  # a pivot below this fraction of the largest diagonal is singular
+PIVOT_TOLERANCE = 1e-13  # a pivot below this fraction of the diagonal is singular
 
 
 @njit(cache=True)
-def envelope_factor(first, ptr, a):
+def envelope_factor(first, ptr, a, per_row):
     """Overwrite the envelope a with its Cholesky factor L (a = L L^T).
 
-    Returns False if a pivot is not positive relative to the largest diagonal entry (a
-    singular matrix: redundant constraints or a dead-centre position), True otherwise.
+    Returns False if a pivot is not positive relative to the largest diagonal entry, or with
+    ``per_row`` to its own row's diagonal entry (a singular matrix: redundant constraints or a
+    dead-centre position), True otherwise. Per row, rows of very different scales pass (a
+    light wheel beside a heavy frame in M + Phi_q^T W Phi_q, positive definite by
+    construction); against the largest, a Schur complement near a dead centre is caught.
     """
     size = first.shape[0]
-    scale = 0.0
+    largest = 0.0
     for i in range(size):
-        scale = max(scale, abs(a[ptr[i] + i - first[i]]))
-    tiny = PIVOT_TOLERANCE * scale
+        largest = max(largest, abs(a[ptr[i] + i - first[i]]))
     for i in range(size):
         fi = first[i]
         row_i = ptr[i] - fi  # a[row_i + j] is entry (i, j)
@@ -39,6 +41,7 @@ def envelope_factor(first, ptr, a):
                 s -= a[row_i + k] * a[row_j + k]
             a[row_i + j] = s / a[row_j + j]
         d = a[row_i + i]
+        tiny = PIVOT_TOLERANCE * (abs(d) if per_row else largest)
         for k in range(fi, i):
             d -= a[row_i + k] * a[row_i + k]
         if not d > tiny:

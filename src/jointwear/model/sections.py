@@ -198,7 +198,7 @@ class Solver(Table):
     max_step: PositiveTime = 1e-3
     initial_step: PositiveTime = 1e-6
     formulation: Annotated[str, one_of(FORMULATIONS, "formulation")] = "augmented_lagrangian"
-    penalty: Annotated[Number, Gt(0), Le(1e12)] = 1e6
+    penalty: Annotated[Number, Ge(1), Le(1e9)] = 1e6
     baumgarte_alpha: Annotated[Number, Ge(0)] = 5.0
     baumgarte_beta: Annotated[Number, Ge(0)] = 5.0
     max_constraint_violation: Annotated[Number, Gt(0)] = 1e-3

@@ -5,8 +5,11 @@ Bayo, Garcia de Jalon and Serna (1988); Garcia de Jalon and Bayo (1994), sec. 5.
     (M + Phi_q^T W Phi_q) q''_k+1 = g - Phi_q^T (lam_k - W gamma),
     lam_k+1 = lam_k + W (Phi_q q''_k+1 - gamma),  lam_0 = 0,
 
-until every row's residual, or the change of q'', is below SETTLED of its size; M q'' = g -
-Phi_q^T lam holds at every iterate. The leading matrix is
+until every row's residual, or the change of q'' still to come, is below SETTLED of its size.
+Near a singular position the iterations settle slowly in the directions the rows nearly share;
+there residuals below UNSETTLED of the largest row's terms are accepted after MAX_ITERATIONS,
+and larger ones fail the solve (a badly conditioned system: masses and inertias of very
+different sizes). M q'' = g - Phi_q^T lam holds at every iterate. The leading matrix is
 positive definite whatever the rank of Phi_q, so singular positions and redundant
 constraints pass. W is diagonal, w_r = penalty / (Phi_q,r M^-1 Phi_q,r^T): each row's penalty
 relative to its own effective mass. After every step ``project`` moves the positions, then
@@ -26,7 +29,9 @@ from ..constraints import evaluate_constraints
 from ..jacobian import ENTRIES, add_transpose_product, norm, row_dot
 from ..linalg import envelope_factor, envelope_solve
 
-MAX_ITERATIONS = 30  # iterations per evaluation
+MAX_ITERATIONS = 50  # iterations per evaluation
+UNSETTLED = 1e-5  # at MAX_ITERATIONS, residuals below this of the largest row's terms pass
+CLEAN_AFTER = 3  # more iterations than this: near a singular position, rows take least norm
 SETTLED = 1e-10  # iterations stop at residuals, or changes of q'', this fraction of their size
 GRAM_SHIFT = 1e-10  # regularisation of Phi_q^T Phi_q in row_multipliers [-]
 MAX_PROJECTIONS = 5  # corrections per projection of positions, and of velocities
@@ -48,6 +53,7 @@ class AugmentedScratch(NamedTuple):
     x_coords: np.ndarray  # (n,) a coordinate vector in envelope order
     lead: np.ndarray  # M + Phi_q^T W Phi_q in envelope storage, or its factor
     evaluated: np.ndarray  # (1 + 2n,) time [s] and state the factor in lead belongs to
+    iterations: np.ndarray  # (1,) int64 iterations of the last evaluation
 
 
 def make_scratch(n: int, m: int, mech: NamedTuple) -> AugmentedScratch:
@@ -66,6 +72,7 @@ def make_scratch(n: int, m: int, mech: NamedTuple) -> AugmentedScratch:
         x_coords=np.zeros(n),
         lead=np.zeros(mech.coord_ptr[-1]),
         evaluated=np.full(1 + 2 * n, np.nan),
+        iterations=np.zeros(1, dtype=np.int64),
     )
 
 
@@ -83,7 +90,7 @@ def _factor_rows(mech, wk):
                 at = pairs[r, ENTRIES * e1 + e2]
                 if at >= 0:
                     lead[at] += w * cq[r, e1] * cq[r, e2]
-    return envelope_factor(mech.coord_first, mech.coord_ptr, lead)
+    return envelope_factor(mech.coord_first, mech.coord_ptr, lead, True)
 
 
 @njit(cache=True, no_cpython_wrapper=True)
@@ -138,7 +145,9 @@ def solve(wk, t, y, mech):
     previous = wk.force
     for r in range(m):
         wk.lam[r] = 0.0
-    for _ in range(MAX_ITERATIONS):
+    last_change = np.inf
+    settled = False
+    for k in range(MAX_ITERATIONS):
         for r in range(m):
             coef[r] = wk.weight[r] * wk.gamma[r] - wk.lam[r]
         for c in range(n):
@@ -150,6 +159,8 @@ def solve(wk, t, y, mech):
             change = max(change, abs(wk.qdd[c] - previous[c]))
             size = max(size, abs(wk.qdd[c]))
         met = True  # every row's residual Phi_q,r q'' - gamma_r within SETTLED of its terms
+        worst = 0.0  # the largest residual, and the largest row's terms
+        largest = 0.0
         for r in range(m):
             residual = -wk.gamma[r]
             terms = abs(wk.gamma[r])
@@ -161,8 +172,22 @@ def solve(wk, t, y, mech):
                     terms += abs(term)
             wk.lam[r] += wk.weight[r] * residual
             met &= abs(residual) <= SETTLED * terms
-        if met or change <= SETTLED * size:  # the second: redundant rows, inconsistent gamma
+            worst = max(worst, abs(residual))
+            largest = max(largest, terms)
+        # Or q'' has settled where the residuals cannot (redundant rows with gamma inconsistent
+        # at rounding level): the remaining change, estimated from the contraction of the last
+        # two changes, is below SETTLED of q''. The first change is from the last evaluation.
+        ratio = change / last_change if k > 1 and last_change > 0.0 else 1.0
+        if met or (ratio < 0.5 and change * ratio / (1.0 - ratio) <= SETTLED * size):
+            settled = True
             break
+        if change == 0.0 and k > 0:  # nothing moves any more: rounding level everywhere
+            settled = True
+            break
+        last_change = change
+    wk.iterations[0] = k + 1
+    if not settled and worst > UNSETTLED * largest:
+        return False  # not near a singular position: a badly conditioned system
     wk.evaluated[0] = t
     wk.evaluated[1:] = y
     return True
@@ -170,7 +195,7 @@ def solve(wk, t, y, mech):
 
 @njit(cache=True, no_cpython_wrapper=True)
 def row_multipliers(wk, mech):
-    """With redundant constraints, lam becomes the least-norm set with the same Phi_q^T lam.
+    """With redundant constraints, or near a singular position, lam becomes the least-norm set.
 
     With redundant constraints only Phi_q^T lam, the force on the bodies, is determined; the
     iterations leave lam with an arbitrary part that applies none (round-off inconsistencies
@@ -179,7 +204,7 @@ def row_multipliers(wk, mech):
     Phi_q^T Phi_q + eps I, eps = GRAM_SHIFT of its largest diagonal. The evaluation's factor
     is overwritten.
     """
-    if not mech.redundant:
+    if not mech.redundant and wk.iterations[0] <= CLEAN_AFTER:
         return
     n = mech.inv_mass.shape[0]
     m = wk.phi.shape[0]

@@ -69,7 +69,7 @@ def solve(wk, t, y, mech):
             if col >= 0:
                 b += cq[r, e] * (inv_mass[col] * g[col] + a2 * qd[col])
         wk.x_rows[mech.row_order[r]] = b
-    if not envelope_factor(mech.row_first, mech.row_ptr, wk.schur):
+    if not envelope_factor(mech.row_first, mech.row_ptr, wk.schur, False):
         return False
     envelope_solve(mech.row_first, mech.row_ptr, wk.schur, wk.x_rows)
     for r in range(wk.phi.shape[0]):
