@@ -90,6 +90,13 @@ def _redundancy_message(cq: NDArray, labels: list[str]) -> str:
     )
 
 
+def redundant_equations(system: System, y0: NDArray[np.float64]) -> int:
+    """Constraint equations of ``system`` that depend on others at the state y0."""
+    n = y0.shape[0] // 2
+    _, cq, _ = _evaluate(system, y0[:n], y0[n:])
+    return cq.shape[0] - _rank(cq)[0]
+
+
 def assemble(model: Model, system: System, tolerance: float | None = None) -> Assembly:
     """Solve the initial position and velocity analysis.
 

@@ -18,7 +18,7 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import NDArray
 
-ENTRIES = 6  # Jacobian entries per row: (x, y, phi) of its first body, then of its second
+from .kernels.jacobian import ENTRIES  # per row: (x, y, phi) of its first body, then second
 
 
 class Pattern(NamedTuple):
@@ -107,7 +107,10 @@ def build_pattern(row_bodies: NDArray[np.int64], n_bodies: int) -> Pattern:
                     )
 
     key = [
-        (min(body_position[b] for b in pair if b >= 0), max(body_position[b] for b in pair))
+        (
+            min(body_position[b] for b in pair if b >= 0),
+            max(body_position[b] for b in pair if b >= 0),
+        )
         if (pair >= 0).any()
         else (n_bodies, n_bodies)
         for pair in row_bodies

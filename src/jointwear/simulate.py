@@ -16,7 +16,7 @@ import numpy as np
 import pandas as pd
 
 from ._version import __version__
-from .assembly import assemble
+from .assembly import assemble, redundant_equations
 from .energy import EnergyMonitor
 from .interrupts import stop_requests
 from .kernels import loop
@@ -158,7 +158,9 @@ def simulate(
     solver = model.solver
     system = build_system(model)
     assembly = assemble(model, build_system(model, ideal=True))  # journals centred
-    if assembly.redundant:  # rows report the least-norm multipliers (kernels.dynamics)
+    # of the system that runs, without the clearance joints' rows
+    redundant = redundant_equations(system, assembly.y0) if assembly.redundant else 0
+    if redundant:  # rows report the least-norm multipliers (kernels.formulations)
         system = system._replace(mechanism=system.mechanism._replace(redundant=True))
     outside = sliders_outside_guides(model, assembly.y0)
     if outside:
@@ -289,7 +291,7 @@ def simulate(
             "formulation": solver.formulation,
             "max_violation": stats["max_constraint_violation"],
             "bound": solver.max_constraint_violation,
-            "redundant_equations": assembly.redundant,
+            "redundant_equations": redundant,
         },
         "energy": energy.summary(),
     }

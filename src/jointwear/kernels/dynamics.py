@@ -60,8 +60,8 @@ def _row_multipliers(wk, mech):
 
 
 _BY_KIND = {
-    baumgarte.BaumgarteScratch.__name__: baumgarte,
-    augmented.AugmentedScratch.__name__: augmented,
+    module.make_scratch.__annotations__["return"].__name__: module
+    for module in _FORMULATIONS.values()
 }
 for _stub in (_solve, _project, _row_multipliers):
     by_kind(_stub, {kind: getattr(module, _stub.__name__[1:]) for kind, module in _BY_KIND.items()})

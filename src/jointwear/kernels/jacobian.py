@@ -8,7 +8,7 @@ import math
 
 from numba import njit
 
-ENTRIES = 6  # pattern.ENTRIES
+ENTRIES = 6  # Jacobian entries per row: x, y, phi of its first body, then of its second
 
 
 @njit(cache=True, no_cpython_wrapper=True)

@@ -30,8 +30,8 @@ from ..jacobian import ENTRIES, add_transpose_product, norm, row_dot
 from ..linalg import envelope_factor, envelope_solve
 
 MAX_ITERATIONS = 50  # iterations per evaluation
-UNSETTLED = 1e-5  # at MAX_ITERATIONS, residuals below this of the largest row's terms pass
-CLEAN_AFTER = 3  # more iterations than this: near a singular position, rows take least norm
+UNSETTLED = 1e-3  # at MAX_ITERATIONS, residuals below this of the largest row's terms pass
+CLEAN_AFTER = 10  # more iterations than this: near a singular position, rows take least norm
 SETTLED = 1e-10  # iterations stop at residuals, or changes of q'', this fraction of their size
 GRAM_SHIFT = 1e-10  # regularisation of Phi_q^T Phi_q in row_multipliers [-]
 MAX_PROJECTIONS = 5  # corrections per projection of positions, and of velocities
