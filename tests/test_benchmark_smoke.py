@@ -55,3 +55,16 @@ def test_contact_laws_benchmark_prints_its_table():
     assert names == ["Hertz (paper)", "Johnson", "Liu et al.", "elastic foundation, h = 5 mm",
                      "Hertz, lubricated (SAE 30, short bearing)"]  # fmt: skip
     assert all(" kN | " in row and " µm | " in row for row in rows)
+
+
+def test_chain_benchmark_prints_its_table():
+    args = ["--sizes", "2", "5", "--repeats", "1"]
+    done = subprocess.run(
+        [sys.executable, str(BENCH.with_name("chain.py")), *args],
+        capture_output=True, text=True, timeout=600,
+    )  # fmt: skip
+    assert done.returncode == 0, done.stderr
+    rows = [line for line in done.stdout.splitlines() if line.startswith("| ")][2:]
+    assert [row.split(" | ")[0] for row in rows] == ["| 2", "| 5"]
+    # 1 s at a row every 1 ms: 1001 rows, whatever the sizes
+    assert all(row.split(" | ")[4] == "1001" for row in rows)
