@@ -64,7 +64,7 @@ def test_chain_benchmark_prints_its_table():
         capture_output=True, text=True, timeout=600,
     )  # fmt: skip
     assert done.returncode == 0, done.stderr
-    rows = [line for line in done.stdout.splitlines() if line.startswith("| ")][2:]
+    rows = [line for line in done.stdout.splitlines() if line.startswith("| ")][1:]
     assert [row.split(" | ")[0] for row in rows] == ["| 2", "| 5"]
     # 1 s at a row every 1 ms: 1001 rows, whatever the sizes
     assert all(row.split(" | ")[4] == "1001" for row in rows)
