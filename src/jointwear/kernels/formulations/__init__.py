@@ -12,3 +12,26 @@ is compiled:
 3. ``row_multipliers(wk, mech)``: after ``solve`` for an output row, make lam the reported
    multipliers (the least-norm set where redundant constraints leave them open).
 """
+
+import numpy as np
+
+from ..jacobian import ENTRIES
+
+
+def shared_arrays(n: int, m: int) -> dict[str, np.ndarray]:
+    """The arrays every formulation's scratch has, for n coordinates and m rows (Python).
+
+    g (n,) applied forces [N, N m]; phi, gamma, phi_t (m,) Phi and its acceleration terms;
+    cq (m, 6) Jacobian entries (``jacobian.py``); lam (m,) multipliers [N, N m]; force (n,)
+    Phi_q^T lam after an evaluation, scratch within one; x_rows (m,) a row vector.
+    """
+    return {
+        "g": np.zeros(n),
+        "phi": np.zeros(m),
+        "cq": np.zeros((m, ENTRIES)),
+        "gamma": np.zeros(m),
+        "phi_t": np.zeros(m),
+        "lam": np.zeros(m),
+        "force": np.zeros(n),
+        "x_rows": np.zeros(m),
+    }

@@ -28,6 +28,7 @@ from numba import njit
 from ..constraints import evaluate_constraints
 from ..jacobian import ENTRIES, add_transpose_product, norm, row_dot
 from ..linalg import envelope_factor, envelope_solve
+from . import shared_arrays
 
 MAX_ITERATIONS = 50  # iterations per evaluation
 UNSETTLED = 1e-3  # at MAX_ITERATIONS, residuals below this of the largest row's terms pass
@@ -59,14 +60,7 @@ class AugmentedScratch(NamedTuple):
 def make_scratch(n: int, m: int, mech: NamedTuple) -> AugmentedScratch:
     """Allocate the scratch of n coordinates and m rows of ``system.Mechanism`` (Python)."""
     return AugmentedScratch(
-        g=np.zeros(n),
-        phi=np.zeros(m),
-        cq=np.zeros((m, ENTRIES)),
-        gamma=np.zeros(m),
-        phi_t=np.zeros(m),
-        lam=np.zeros(m),
-        force=np.zeros(n),
-        x_rows=np.zeros(m),
+        **shared_arrays(n, m),
         weight=np.zeros(m),
         qdd=np.zeros(n),
         x_coords=np.zeros(n),

@@ -14,6 +14,7 @@ from numba import njit
 
 from ..jacobian import ENTRIES, norm
 from ..linalg import envelope_factor, envelope_solve
+from . import shared_arrays
 
 
 class BaumgarteScratch(NamedTuple):
@@ -33,14 +34,7 @@ class BaumgarteScratch(NamedTuple):
 def make_scratch(n: int, m: int, mech: NamedTuple) -> BaumgarteScratch:
     """Allocate the scratch of n coordinates and m rows of ``system.Mechanism`` (Python)."""
     return BaumgarteScratch(
-        g=np.zeros(n),
-        phi=np.zeros(m),
-        cq=np.zeros((m, ENTRIES)),
-        gamma=np.zeros(m),
-        phi_t=np.zeros(m),
-        lam=np.zeros(m),
-        force=np.zeros(n),
-        x_rows=np.zeros(m),
+        **shared_arrays(n, m),
         schur=np.zeros(mech.row_ptr[-1]),
     )
 
