@@ -131,7 +131,7 @@ def drive_dopri5(f, t0, y0, stops, rtol, atol, h0, h_max, t_out):
         dp.rk_start(st, t, y, f0, h0)
         j = _collect(res, j, t, interp, dinterp)
         while st.scal[dp.S_T] < t_stop:
-            dp.rk_begin(st, h_max, 0.0, t_stop)
+            dp.rk_begin(st, h_max, 0.0, t_stop, t_stop)
             for s in range(1, 7):
                 ts = dp.rk_stage(st, s)
                 f(ts, st.ystage, st.k[s])
@@ -169,7 +169,7 @@ def drive_abm(f, t0, y0, stops, rtol, atol, h0, h_max, t_out):
         abm.abm_start(st, t, y, yp0, h0)
         j = _collect(res, j, t, interp, dinterp)
         while st.scal[abm.S_T] < t_stop:
-            t_new = abm.abm_predict(st, h_max, 0.0, t_stop, y_pred)
+            t_new = abm.abm_predict(st, h_max, 0.0, t_stop, t_stop, y_pred)
             f(t_new, y_pred, yp_pred)
             err = abm.abm_correct(st, yp_pred, rtol, atol, y_corr)
             if err <= 1.0:
@@ -273,7 +273,7 @@ def one_step(f, t0, y0, h):
     st, f0 = dp.make_rk_state(n), np.empty(n)
     f(t0, y0, f0)
     dp.rk_start(st, t0, y0, f0, h)
-    dp.rk_begin(st, h, 0.0, t0 + 10.0 * h)
+    dp.rk_begin(st, h, 0.0, t0 + 10.0 * h, t0 + 10.0 * h)
     for s in range(1, 7):
         ts = dp.rk_stage(st, s)
         f(ts, st.ystage, st.k[s])
@@ -350,11 +350,27 @@ def test_pi_controller():
 
 
 def test_clip_step():
-    assert stepsize.clip_step(0.0, 5.0, 0.0, 1.0, 10.0) == 1.0
-    assert stepsize.clip_step(0.0, 1e-9, 1e-6, 1.0, 10.0) == 1e-6
-    assert stepsize.clip_step(0.1, 1.0, 0.0, 10.0, 0.3) == 0.3 - 0.1  # lands on t_stop
-    assert stepsize.clip_step(0.0, 1.0, 0.0, 10.0, 1.005) == 1.005  # no sliver left
-    assert stepsize.clip_step(0.0, 1.0, 0.0, 10.0, 1.05) == 1.0
+    def clip(t, h, h_min, h_max, t_stop, t_land=None):
+        return stepsize.clip_step(t, h, h_min, h_max, t_stop, t_stop if t_land is None else t_land)
+
+    assert clip(0.0, 5.0, 0.0, 1.0, 10.0) == 1.0
+    assert clip(0.0, 1e-9, 1e-6, 1.0, 10.0) == 1e-6
+    assert clip(0.1, 1.0, 0.0, 10.0, 0.3) == 0.3 - 0.1  # lands on t_stop
+    assert clip(0.0, 1.0, 0.0, 10.0, 1.005) == 1.005  # no sliver left
+    assert clip(0.0, 1.0, 0.0, 10.0, 1.05) == 1.0
+    # an output row is landed on when the step shrinks by at most LAND_SHORTEN or grows by 1 %
+    shortest = 1.0 - stepsize.LAND_SHORTEN
+    assert clip(0.0, 1.0, 0.0, 10.0, 10.0, shortest + 0.01) == shortest + 0.01
+    assert clip(0.0, 1.0, 0.0, 10.0, 10.0, 1.005) == 1.005
+    assert clip(0.0, 1.0, 0.0, 10.0, 10.0, shortest - 0.01) == 1.0
+    assert clip(0.0, 1.0, 0.0, 10.0, 10.0, 1.05) == 1.0
+    assert clip(0.0, 1.0, 0.0, 1.0, 10.0, 1.005) == 1.0  # not past h_max
+    assert clip(0.0, 1e-6, 1e-6, 1.0, 10.0, 0.95e-6) == 1e-6  # not below h_min
+    # the end time is exact on either target
+    t, t_land = 0.1, 0.3
+    h = clip(t, 0.2, 0.0, 1.0, 10.0, t_land)
+    assert stepsize.step_end(t, h, 10.0, t_land) == t_land
+    assert stepsize.step_end(t, 0.05, 10.0, t_land) == t + 0.05
 
 
 # --------------------------------------------------------------------------- both methods
@@ -472,7 +488,7 @@ def test_abm_constant_step_coefficients():
     h = 0.01
     abm.abm_start(st, 0.0, np.zeros(1), np.ones(1), h)  # fictitious history has equal steps
     st.ints[abm.I_K] = 7
-    abm.abm_predict(st, h, 0.0, 1.0, np.empty(1))
+    abm.abm_predict(st, h, 0.0, 1.0, 1.0, np.empty(1))
     gamma = [1, 1 / 2, 5 / 12, 3 / 8, 251 / 720, 95 / 288, 19087 / 60480, 5257 / 17280]
     np.testing.assert_allclose(st.g[:8], gamma, rtol=1e-14)
 
@@ -484,7 +500,7 @@ def test_abm_interpolation_unchanged_by_rejected_attempts():
     harmonic(0.0, y, yp)
     abm.abm_start(st, 0.0, y, yp, 1e-3)
     for _ in range(12):
-        t_new = abm.abm_predict(st, math.inf, 0.0, 10.0, yq)
+        t_new = abm.abm_predict(st, math.inf, 0.0, 10.0, 10.0, yq)
         harmonic(t_new, yq, ypq)
         abm.abm_correct(st, ypq, 1e-8, 1e-8, yc)
         harmonic(t_new, yc, ypc)
@@ -493,7 +509,7 @@ def test_abm_interpolation_unchanged_by_rejected_attempts():
     before, after = np.empty(2), np.empty(2)
     abm.abm_interpolate(st, t_mid, before)
     st.scal[abm.S_HNEXT] *= 50.0  # a step far too long
-    t_new = abm.abm_predict(st, math.inf, 0.0, 10.0, yq)
+    t_new = abm.abm_predict(st, math.inf, 0.0, 10.0, 10.0, yq)
     harmonic(t_new, yq, ypq)
     assert abm.abm_correct(st, ypq, 1e-8, 1e-8, yc) > 1.0
     abm.abm_reject(st)
@@ -505,7 +521,7 @@ def test_abm_interpolation_unchanged_by_rejected_attempts():
 def test_nonfinite_error_is_rejected():
     st = dp.make_rk_state(1)
     dp.rk_start(st, 0.0, np.ones(1), np.ones(1), 0.1)
-    dp.rk_begin(st, 1.0, 0.0, 1.0)
+    dp.rk_begin(st, 1.0, 0.0, 1.0, 1.0)
     st.k[1:] = np.nan
     err = dp.rk_error(st, 1e-6, 1e-6)
     assert not err <= 1.0

@@ -24,6 +24,13 @@ the step ended with (and, in the augmented Lagrangian formulation, projects the 
 onto the constraints). A violation above ``Control.max_violation`` ends the run with
 ``Status.CONSTRAINT_DRIFT``: the motion may have left its assembly branch.
 
+Output rows: each evaluates the right-hand side at its state interpolated in the step, so it
+reports the accelerations, multipliers and forces there. Without contact slots, and with rows
+at least ``max_step`` apart, steps are cut to end on the rows' times when that is cheap
+(``stepsize.clip_step``), and such a row is written before the projection from the step's own
+last evaluation. With contact slots the steps are left alone: in contact they are far shorter
+than the row interval.
+
 Minimum step (SPEC sec. 2): when the error test fails at ``min_step`` the step is accepted
 anyway and counted in ``Counter.MIN_STEP_HITS``.
 """
@@ -36,8 +43,8 @@ from numba import njit
 
 from . import elements, integrate
 from .codes import Counter, EventDirection, Status
-from .dynamics import project, rhs
-from .outputs import write_row
+from .dynamics import project, rhs, row_multipliers
+from .outputs import fill_row, write_row
 
 EVENT_TIME_TOLERANCE = 1e-13  # relative bracket width at which a crossing is located [-]
 MAX_EVENT_ITERATIONS = 100
@@ -238,17 +245,42 @@ def _contact_cut(problem, events, integ, scratch, t_old, y_old, t_new, y_new):
 
 
 @njit(cache=True, no_cpython_wrapper=True, inline="always")
-def _write_rows(problem, integ, ctl, log, scratch, out, rows, t):
-    """Write the output rows due by time t [s]; return (row count, False if singular)."""
-    k = log.counters[Counter.OUTPUT_ROWS]
+def _write_rows(problem, integ, ctl, log, scratch, out, rows, t, reuse_end):
+    """Write the output rows due by time t [s]; return (row count, False if singular).
+
+    Each row evaluates the right-hand side at its interpolated state, except, with
+    ``reuse_end``, a row at exactly t, the end of the step just accepted, when no row before
+    it was evaluated: it is filled from the step's last evaluation, which was at that state.
+    """
+    counters = log.counters
+    k = counters[Counter.OUTPUT_ROWS]
     while k < ctl.output_times.shape[0] and ctl.output_times[k] <= t:
-        integrate.interpolate(integ, ctl.output_times[k], scratch.y)
-        if not write_row(ctl.output_times[k], scratch.y, problem, scratch.yp, out[rows]):
-            return rows, False
+        t_row = ctl.output_times[k]
+        if reuse_end and t_row == t:
+            row_multipliers(problem)
+            fill_row(
+                t, integrate.current_state(integ), problem, integrate.current_derivative(integ),
+                out[rows],
+            )  # fmt: skip
+        else:
+            integrate.interpolate(integ, t_row, scratch.y)
+            counters[Counter.RHS_EVALS] += 1
+            if not write_row(t_row, scratch.y, problem, scratch.yp, out[rows]):
+                return rows, False
+            reuse_end = False  # the evaluation now held is this row's
         rows += 1
         k += 1
-        log.counters[Counter.OUTPUT_ROWS] = k
+        counters[Counter.OUTPUT_ROWS] = k
     return rows, True
+
+
+@njit(cache=True, no_cpython_wrapper=True, inline="always")
+def _landing(ctl, k):
+    """Time the next step should end on if cheap [s]: row k's, when rows are a step apart."""
+    times = ctl.output_times
+    if 0 < k < times.shape[0] and times[k] - times[k - 1] >= ctl.max_step:
+        return times[k]
+    return ctl.t_end
 
 
 @njit(cache=True, no_cpython_wrapper=True, inline="always")
@@ -293,7 +325,7 @@ def _after_step(problem, integ, events, ctl, log, scratch, out, rows, h):
         log.counters[Counter.SNAPSHOTS] = snapshots
     _log_events(problem, events, integ, log, scratch, t_old, t_cut, scratch.y_cut)
     # The step's rows see the contact periods as the step did, before they open or close.
-    rows, ok = _write_rows(problem, integ, ctl, log, scratch, out, rows, t_cut)
+    rows, ok = _write_rows(problem, integ, ctl, log, scratch, out, rows, t_cut, False)
     if not ok:
         return rows, False
     if t_cut == t_new:
@@ -322,7 +354,7 @@ def advance(problem, integ, events, ctl, log, scratch, out, t_stop, step_stop):
     counters = log.counters
     while True:
         t = integrate.current_time(integ)
-        rows, ok = _write_rows(problem, integ, ctl, log, scratch, out, rows, t)
+        rows, ok = _write_rows(problem, integ, ctl, log, scratch, out, rows, t, False)
         if not ok:
             return Status.SINGULAR, rows
         if t >= ctl.t_end:
@@ -339,7 +371,8 @@ def advance(problem, integ, events, ctl, log, scratch, out, t_stop, step_stop):
             return Status.MAX_STEPS, rows
         if steps >= step_stop:
             return Status.RUNNING, rows
-        outcome = integrate.attempt(integ, problem, ctl, counters, ctl.t_end)
+        t_land = _landing(ctl, counters[Counter.OUTPUT_ROWS]) if not slots else ctl.t_end
+        outcome = integrate.attempt(integ, problem, ctl, counters, t_land)
         if outcome == integrate.REJECTED:
             counters[Counter.REJECTED] += 1
             continue
@@ -350,6 +383,11 @@ def advance(problem, integ, events, ctl, log, scratch, out, t_stop, step_stop):
         for i in range(y_new.shape[0]):
             if not math.isfinite(y_new[i]):
                 return Status.NON_FINITE, rows
+        if not slots:  # no contact change can cut the step: its rows go before the projection
+            t_new = integrate.current_time(integ)
+            rows, ok = _write_rows(problem, integ, ctl, log, scratch, out, rows, t_new, True)
+            if not ok:
+                return Status.SINGULAR, rows
         violation = project(integrate.current_time(integ), y_new, problem)
         if violation < 0.0:
             return Status.SINGULAR, rows

@@ -37,10 +37,20 @@ def _reaction(dyn, mech, jt, side, k):
 def write_row(t, y, problem, ydot, row):
     """Fill one output row for state y at time t [s]. Returns False if the solve failed."""
     ok = rhs(t, y, problem, ydot)
-    mech = problem.mech
-    dyn = problem.dyn
     if ok:
         row_multipliers(problem)
+    fill_row(t, y, problem, ydot, row)
+    return ok
+
+
+@njit(cache=True, no_cpython_wrapper=True)
+def fill_row(t, y, problem, ydot, row):
+    """Fill one output row from the last evaluation ``rhs(t, y, problem, ydot)`` [s].
+
+    The multipliers must be as ``row_multipliers`` reports them.
+    """
+    mech = problem.mech
+    dyn = problem.dyn
     n = mech.inv_mass.shape[0]
     row[0] = t
     c = 1
@@ -69,4 +79,3 @@ def write_row(t, y, problem, ydot, row):
         row[c] = elements.elastic_energy(problem.elements, problem.scratch)
         c += 1
     row[c] = constraint_norm(dyn)
-    return ok

@@ -7,10 +7,14 @@ method and a run compiles only the method it uses. The contract, for a method mo
 1. ``start(st, t, y, f0, h)``: begin at (t, y) with f0 = f(t, y) and first step h [s].
 2. ``restart(st, t, y, f0, h_last, h_min)``: begin again after a discontinuity at t (a
    contact onset), knowing the last step h_last [s].
-3. ``attempt(st, problem, ctl, counters, t_stop)``: try one step, evaluating the right-hand
+3. ``attempt(st, problem, ctl, counters, t_land)``: try one step, evaluating the right-hand
    side ``dynamics.rhs`` on ``problem``; return ``ACCEPTED``, ``REJECTED`` or minus a
-   ``Status``. A failed error test at ``ctl.min_step`` is accepted and counted.
-4. ``current_time(st)``, ``current_state(st)``: where the last accepted step ended.
+   ``Status``. The step never passes ``ctl.t_end``, and ends exactly on ``t_land`` (the
+   next output row) when that shortens it a little (``stepsize.clip_step``). A failed error
+   test at ``ctl.min_step`` is accepted and counted.
+4. ``current_time(st)``, ``current_state(st)``: where the last accepted step ended;
+   ``current_derivative(st)``: f there, from the step's last evaluation of the right-hand
+   side, which was at that state (before ``dynamics.project`` moves it).
 5. ``step_start(st)``: time [s] and state where the last accepted step began.
 6. ``interpolate(st, t, out)``: dense output inside the last accepted step;
    ``interpolate_ends(st, t, out)``: an interpolant exact at both ends of that step (for
@@ -64,8 +68,8 @@ def _forced(h, err, ctl, counters):
 
 
 @njit(cache=True, no_cpython_wrapper=True)
-def _rk_attempt(st, problem, ctl, counters, t_stop):
-    h = rk_begin(st, ctl.max_step, ctl.min_step, t_stop)
+def _rk_attempt(st, problem, ctl, counters, t_land):
+    h = rk_begin(st, ctl.max_step, ctl.min_step, ctl.t_end, t_land)
     min_step = h <= ctl.min_step * (1.0 + 1e-12)
     for s in range(1, st.k.shape[0]):
         ts = rk_stage(st, s)
@@ -86,8 +90,8 @@ def _rk_attempt(st, problem, ctl, counters, t_stop):
 
 
 @njit(cache=True, no_cpython_wrapper=True)
-def _abm_attempt(st, problem, ctl, counters, t_stop):
-    t_new = abm_predict(st, ctl.max_step, ctl.min_step, t_stop, st.p)
+def _abm_attempt(st, problem, ctl, counters, t_land):
+    t_new = abm_predict(st, ctl.max_step, ctl.min_step, ctl.t_end, t_land, st.p)
     h = st.scal[S_H]
     min_step = h <= ctl.min_step * (1.0 + 1e-12)
     counters[Counter.RHS_EVALS] += 1
@@ -139,12 +143,23 @@ def _state(st):
     return st.y
 
 
+@njit(cache=True, no_cpython_wrapper=True)
+def _rk_derivative(st):
+    return st.k[0]  # FSAL: the last stage, moved to the first by rk_accept
+
+
+@njit(cache=True, no_cpython_wrapper=True)
+def _abm_derivative(st):
+    return st.yp
+
+
 _METHODS = {
     RkState.__name__: {
         "start": rk_start,
         "restart": _rk_restart,
         "attempt": _rk_attempt,
         "step_start": _rk_step_start,
+        "current_derivative": _rk_derivative,
         "interpolate": rk_interpolate,
         "interpolate_ends": rk_interpolate,  # passes through both ends already
     },
@@ -153,6 +168,7 @@ _METHODS = {
         "restart": _abm_restart,
         "attempt": _abm_attempt,
         "step_start": _abm_step_start,
+        "current_derivative": _abm_derivative,
         "interpolate": abm_interpolate,
         "interpolate_ends": abm_interpolate_ends,
     },
@@ -167,8 +183,8 @@ def restart(st, t, y, f0, h_last, h_min):
     """Begin again at (t [s], y) after a discontinuity; h_last, h_min [s]."""
 
 
-def attempt(st, problem, ctl, counters, t_stop):
-    """Try one step; ACCEPTED, REJECTED, or minus a Status."""
+def attempt(st, problem, ctl, counters, t_land):
+    """Try one step (landing on t_land [s] when cheap); ACCEPTED, REJECTED, or minus a Status."""
 
 
 def step_start(st):
@@ -191,11 +207,15 @@ def current_state(st):
     """State reached (a view of the integrator's array)."""
 
 
+def current_derivative(st):
+    """Derivative at the state reached, as the step evaluated it (the integrator's array)."""
+
+
 for _methods in _METHODS.values():
     _methods["current_time"] = _time
     _methods["current_state"] = _state
 for _stub in (
     start, restart, attempt, step_start, interpolate, interpolate_ends, current_time,
-    current_state,
+    current_state, current_derivative,
 ):  # fmt: skip
     by_kind(_stub, {kind: methods[_stub.__name__] for kind, methods in _METHODS.items()})

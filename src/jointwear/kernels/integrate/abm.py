@@ -33,7 +33,7 @@ The right-hand side is evaluated by the caller. Call sequence (``st = make_abm_s
     f(t0, y0) -> yp0
     abm_start(st, t0, y0, yp0, h0)               # also: restart (order 1) at any time
     while st.scal[S_T] < t_end:
-        t_new = abm_predict(st, h_max, h_min, t_stop, y_pred)   # ends on t_stop exactly
+        t_new = abm_predict(st, h_max, h_min, t_stop, t_land, y_pred)  # ends on t_stop exactly
         f(t_new, y_pred) -> yp_pred
         err = abm_correct(st, yp_pred, rtol, atol, y_corr)    # accept when err <= 1
         if err <= 1.0:                           # (or forced, e.g. h at h_min)
@@ -50,7 +50,7 @@ from typing import NamedTuple
 import numpy as np
 from numba import njit
 
-from .stepsize import clip_step, hits_stop
+from .stepsize import clip_step, step_end
 
 KMAX = 12  # highest order
 NW = KMAX + 3  # length of the difference tables (phi_1..phi_{KMAX+2}, 1-based i at i-1)
@@ -73,7 +73,7 @@ I_KNEW = 2  # order suggested by the lowering test of the step being tried
 I_NS = 3  # number of trailing accepted steps of equal size
 I_PHASE1 = 4  # 1 while in the start phase (order and step go up each step)
 I_IFAIL = 5  # consecutive failures of the current step
-I_HIT = 6  # 1 if the step being tried ends on t_stop
+I_HIT = 6  # 1 if the step being tried was cut to end on t_stop or t_land
 I_NACCEPT = 7
 I_NREJECT = 8
 N_INTS = 9
@@ -190,25 +190,27 @@ def _coefficients(st: AbmState, h: float, k: int) -> None:
 
 @njit(cache=True)
 def abm_predict(
-    st: AbmState, h_max: float, h_min: float, t_stop: float, y_pred: np.ndarray
+    st: AbmState,
+    h_max: float,
+    h_min: float,
+    t_stop: float,
+    t_land: float,
+    y_pred: np.ndarray,
 ) -> float:
     """Choose the step, compute its coefficients and the predicted solution ``y_pred``.
 
     The proposal ``scal[S_HNEXT]`` is bounded by ``h_min`` and ``h_max`` [s] and cut (or
-    stretched by at most 1 %) to end on ``t_stop`` (> t) [s]; the step is stored in
-    ``scal[S_H]``. Returns ``t_new`` [s] (``t_stop`` exactly when the step lands on it);
-    the caller evaluates ``f(t_new, y_pred)``.
+    stretched by at most 1 %) to end on ``t_stop`` (> t) [s], or on ``t_land`` when cheap
+    (``stepsize.clip_step``); the step is stored in ``scal[S_H]``. Returns ``t_new`` [s]
+    (``t_stop`` or ``t_land`` exactly when the step lands there); the caller evaluates
+    ``f(t_new, y_pred)``.
     """
     t = st.scal[S_T]
-    h = clip_step(t, st.scal[S_HNEXT], h_min, h_max, t_stop)
+    h = clip_step(t, st.scal[S_HNEXT], h_min, h_max, t_stop, t_land)
     st.scal[S_HPROP] = st.scal[S_HNEXT]
     st.scal[S_H] = h
-    if hits_stop(t, h, t_stop):
-        st.scal[S_TNEW] = t_stop
-        st.ints[I_HIT] = 1
-    else:
-        st.scal[S_TNEW] = t + h
-        st.ints[I_HIT] = 0
+    st.scal[S_TNEW] = step_end(t, h, t_stop, t_land)
+    st.ints[I_HIT] = 0 if st.scal[S_TNEW] == t + h else 1
     k = st.ints[I_K]
     _coefficients(st, h, k)
     n = st.y.shape[0]
@@ -343,7 +345,7 @@ def abm_accept(st: AbmState, y_corr: np.ndarray, yp_corr: np.ndarray) -> None:
                 k_next = k + 1
                 e_next = erkp1
         h_next = _new_step(h, e_next, k_next)
-        # a step shortened to land on t_stop says nothing against the earlier proposal
+        # a step shortened to land on t_stop or t_land says nothing against the earlier proposal
         if st.ints[I_HIT] == 1 and h_next >= h:
             h_next = max(h_next, st.scal[S_HPROP])
     st.ints[I_PHASE1] = 1 if phase1 else 0

@@ -15,7 +15,7 @@ new solution, c[-1] = 1 and a[-1] = b), as Dormand-Prince 5(4) is.
 The right-hand side is evaluated by the caller between phases (``st = make_rk_state(n)``)::
 
     rk_start(st, t0, y0, f(t0, y0), h0)          # also: restart after a discontinuity
-    h = rk_begin(st, h_max, h_min, t_stop)       # step to try; ends on t_stop exactly
+    h = rk_begin(st, h_max, h_min, t_stop, t_land)  # ends on t_stop (t_land if cheap) exactly
     for s in range(1, stages):
         ts = rk_stage(st, s)                     # writes st.ystage
         f(ts, st.ystage) -> st.k[s]              # last stage: the new solution at t + h
@@ -35,7 +35,7 @@ from typing import NamedTuple
 import numpy as np
 from numba import njit
 
-from .stepsize import ERR_PREV_MIN, clip_step, error_norm, hits_stop, pi_factor, reject_factor
+from .stepsize import ERR_PREV_MIN, clip_step, error_norm, pi_factor, reject_factor, step_end
 
 
 class Tableau(NamedTuple):
@@ -105,7 +105,7 @@ N_SCAL = 7
 C_NACCEPT = 0
 C_NREJECT = 1
 C_REJECTED = 2  # 1 if the last attempt was rejected (the next accept may not grow h)
-C_HIT = 3  # 1 if the step being tried ends on t_stop
+C_HIT = 3  # 1 if the step being tried was cut to end on t_stop or t_land
 N_COUNT = 4
 
 
@@ -161,14 +161,16 @@ def rk_start(st, t, y, f0, h):
 
 
 @njit(cache=True)
-def rk_begin(st, h_max, h_min, t_stop):
-    """Choose the step to try [s] from the proposal, within [h_min, h_max], landing on t_stop."""
+def rk_begin(st, h_max, h_min, t_stop, t_land):
+    """Choose the step to try [s] within [h_min, h_max]; it lands on t_stop, or t_land if cheap.
+
+    See ``stepsize.clip_step``.
+    """
     t = st.scal[S_T]
-    h = clip_step(t, st.scal[S_HNEXT], h_min, h_max, t_stop)
+    h = clip_step(t, st.scal[S_HNEXT], h_min, h_max, t_stop, t_land)
     st.scal[S_H] = h
-    hit = hits_stop(t, h, t_stop)
-    st.scal[S_TNEW] = t_stop if hit else t + h
-    st.count[C_HIT] = 1 if hit else 0
+    st.scal[S_TNEW] = step_end(t, h, t_stop, t_land)
+    st.count[C_HIT] = 0 if st.scal[S_TNEW] == t + h else 1
     return h
 
 

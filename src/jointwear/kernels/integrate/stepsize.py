@@ -18,7 +18,9 @@ PI controller
 
 Step clipping
     ``clip_step`` applies the step bounds and shortens (or stretches by at most 1 %) the
-    step so that it ends exactly on a stop time.
+    step so that it ends exactly on a stop time; it also lands on an output row's time when
+    that shortens the step by at most ``LAND_SHORTEN`` (the row then reuses the step's last
+    evaluation instead of one of its own).
 """
 
 import math
@@ -32,6 +34,8 @@ FAC_MAX = 10.0
 BETA_DOPRI5 = 0.04  # PI gain for the 5(4) pair (Hairer II.4)
 ERR_PREV_MIN = 1.0e-4
 STRETCH = 1.01  # a step may grow by this factor to land on the stop time
+ROUNDING = 1.0 + 1e-12  # h_max may be exceeded by this factor to land on a time [-]
+LAND_SHORTEN = 0.1  # a step may shrink by this fraction of itself to land on an output row
 
 
 @njit(cache=True)
@@ -123,8 +127,10 @@ def reject_factor(err: float, order: int) -> float:
 
 
 @njit(cache=True)
-def clip_step(t: float, h: float, h_min: float, h_max: float, t_stop: float) -> float:
-    """Bound a proposed step and make it land on ``t_stop`` when it gets there.
+def clip_step(
+    t: float, h: float, h_min: float, h_max: float, t_stop: float, t_land: float
+) -> float:
+    """Bound a proposed step; land it on ``t_stop`` if near, and on ``t_land`` if cheap.
 
     Parameters
     ----------
@@ -136,33 +142,39 @@ def clip_step(t: float, h: float, h_min: float, h_max: float, t_stop: float) -> 
         Step bounds [s]; ``h_min`` yields to ``t_stop`` (a last step may be shorter).
     t_stop : float
         Time the integration must not pass [s] (> ``t``).
+    t_land : float
+        Time a step should end on when it costs little (an output row) [s] (> ``t``).
 
     Returns
     -------
     float
-        The step to take. If ``t_stop - t <= min(STRETCH * h, h_max)`` (after bounding
-        ``h``) the result is ``t_stop - t``: the step ends on the stop time (the kernels then
-        set the new time to ``t_stop`` exactly) and no sliver of a step is left over.
+        The step to take. If ``t_stop - t <= min(STRETCH * h, ROUNDING * h_max)`` (after
+        bounding ``h``) the result is ``t_stop - t``: the step ends on the stop time and no
+        sliver of a step is left over. Otherwise ``t_land - t`` if it is that close too, at
+        least ``h_min``, and either at least ``(1 - LAND_SHORTEN) * h`` or the proposal was
+        cut to ``h_max`` (a shortening that lasts: the steps after it land again, so give
+        ``t_land`` only when rows are at least ``h_max`` apart). ``step_end`` gives the exact
+        end time.
     """
+    limited = h >= h_max
     h = min(max(h, h_min), h_max)
-    rem = t_stop - t
-    if rem <= min(STRETCH * h, h_max):
-        return rem
+    reach = min(STRETCH * h, h_max * ROUNDING)
+    if t_stop - t <= reach:
+        return t_stop - t
+    land = t_land - t
+    if h_min <= land <= reach and (limited or land >= (1.0 - LAND_SHORTEN) * h):
+        return land
     return h
 
 
 @njit(cache=True)
-def hits_stop(t: float, h: float, t_stop: float) -> bool:
-    """Whether the step ``h`` from ``t`` is the one that ends on ``t_stop``.
+def step_end(t: float, h: float, t_stop: float, t_land: float) -> float:
+    """End time of the step ``h`` from ``t`` returned by ``clip_step`` [s].
 
-    Parameters
-    ----------
-    t, h, t_stop : float
-        Current time [s], step returned by ``clip_step`` [s], stop time [s].
-
-    Returns
-    -------
-    bool
-        True when ``h == t_stop - t`` (the clipped last step).
+    ``t_stop`` or ``t_land`` exactly when the step was clipped to end there, else ``t + h``.
     """
-    return h == t_stop - t
+    if h == t_stop - t:
+        return t_stop
+    if h == t_land - t:
+        return t_land
+    return t + h
