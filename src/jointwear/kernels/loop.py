@@ -27,9 +27,9 @@ onto the constraints). A violation above ``Control.max_violation`` ends the run 
 Output rows: each evaluates the right-hand side at its state interpolated in the step, so it
 reports the accelerations, multipliers and forces there. Without contact slots, and with rows
 at least ``max_step`` apart, steps are cut to end on the rows' times when that is cheap
-(``stepsize.clip_step``), and such a row is written before the projection from the step's own
-last evaluation. With contact slots the steps are left alone: in contact they are far shorter
-than the row interval.
+(``stepsize.clip_step``), and a row due exactly at a step's end, with no row due before it
+in the step, is written before the projection from the step's own last evaluation. With
+contact slots the steps are left alone: in contact they are far shorter than the rows' interval.
 
 Minimum step (SPEC sec. 2): when the error test fails at ``min_step`` the step is accepted
 anyway and counted in ``Counter.MIN_STEP_HITS``.
@@ -245,33 +245,36 @@ def _contact_cut(problem, events, integ, scratch, t_old, y_old, t_new, y_new):
 
 
 @njit(cache=True, no_cpython_wrapper=True, inline="always")
-def _write_rows(problem, integ, ctl, log, scratch, out, rows, t, reuse_end):
-    """Write the output rows due by time t [s]; return (row count, False if singular).
-
-    Each row evaluates the right-hand side at its interpolated state, except, with
-    ``reuse_end``, a row at exactly t, the end of the step just accepted, when no row before
-    it was evaluated: it is filled from the step's last evaluation, which was at that state.
-    """
-    counters = log.counters
-    k = counters[Counter.OUTPUT_ROWS]
+def _write_rows(problem, integ, ctl, log, scratch, out, rows, t):
+    """Write the output rows due by time t [s]; return (row count, False if singular)."""
+    k = log.counters[Counter.OUTPUT_ROWS]
     while k < ctl.output_times.shape[0] and ctl.output_times[k] <= t:
-        t_row = ctl.output_times[k]
-        if reuse_end and t_row == t:
-            row_multipliers(problem)
-            fill_row(
-                t, integrate.current_state(integ), problem, integrate.current_derivative(integ),
-                out[rows],
-            )  # fmt: skip
-        else:
-            integrate.interpolate(integ, t_row, scratch.y)
-            counters[Counter.RHS_EVALS] += 1
-            if not write_row(t_row, scratch.y, problem, scratch.yp, out[rows]):
-                return rows, False
-            reuse_end = False  # the evaluation now held is this row's
+        integrate.interpolate(integ, ctl.output_times[k], scratch.y)
+        log.counters[Counter.RHS_EVALS] += 1
+        if not write_row(ctl.output_times[k], scratch.y, problem, scratch.yp, out[rows]):
+            return rows, False
         rows += 1
         k += 1
-        counters[Counter.OUTPUT_ROWS] = k
+        log.counters[Counter.OUTPUT_ROWS] = k
     return rows, True
+
+
+@njit(cache=True, no_cpython_wrapper=True, inline="always")
+def _write_end_row(problem, integ, ctl, log, out, rows):
+    """Write the next output row if it is due exactly at the end of the step just accepted.
+
+    It is filled from the step's last evaluation, which was at that state, so it costs none
+    of its own. Returns the row count.
+    """
+    k = log.counters[Counter.OUTPUT_ROWS]
+    t = integrate.current_time(integ)
+    if k < ctl.output_times.shape[0] and ctl.output_times[k] == t:
+        row_multipliers(problem)
+        y = integrate.current_state(integ)
+        fill_row(t, y, problem, integrate.current_derivative(integ), out[rows])
+        log.counters[Counter.OUTPUT_ROWS] = k + 1
+        rows += 1
+    return rows
 
 
 @njit(cache=True, no_cpython_wrapper=True, inline="always")
@@ -325,7 +328,7 @@ def _after_step(problem, integ, events, ctl, log, scratch, out, rows, h):
         log.counters[Counter.SNAPSHOTS] = snapshots
     _log_events(problem, events, integ, log, scratch, t_old, t_cut, scratch.y_cut)
     # The step's rows see the contact periods as the step did, before they open or close.
-    rows, ok = _write_rows(problem, integ, ctl, log, scratch, out, rows, t_cut, False)
+    rows, ok = _write_rows(problem, integ, ctl, log, scratch, out, rows, t_cut)
     if not ok:
         return rows, False
     if t_cut == t_new:
@@ -354,7 +357,7 @@ def advance(problem, integ, events, ctl, log, scratch, out, t_stop, step_stop):
     counters = log.counters
     while True:
         t = integrate.current_time(integ)
-        rows, ok = _write_rows(problem, integ, ctl, log, scratch, out, rows, t, False)
+        rows, ok = _write_rows(problem, integ, ctl, log, scratch, out, rows, t)
         if not ok:
             return Status.SINGULAR, rows
         if t >= ctl.t_end:
@@ -383,11 +386,8 @@ def advance(problem, integ, events, ctl, log, scratch, out, t_stop, step_stop):
         for i in range(y_new.shape[0]):
             if not math.isfinite(y_new[i]):
                 return Status.NON_FINITE, rows
-        if not slots:  # no contact change can cut the step: its rows go before the projection
-            t_new = integrate.current_time(integ)
-            rows, ok = _write_rows(problem, integ, ctl, log, scratch, out, rows, t_new, True)
-            if not ok:
-                return Status.SINGULAR, rows
+        if not slots:  # no contact change can cut the step short of its end
+            rows = _write_end_row(problem, integ, ctl, log, out, rows)
         violation = project(integrate.current_time(integ), y_new, problem)
         if violation < 0.0:
             return Status.SINGULAR, rows
