@@ -1,5 +1,5 @@
 """``python -m jointwear`` runs the command-line interface."""
 
-from .cli import app
+from .command import main
 
-app()
+main()

@@ -11,7 +11,7 @@ from .io import check_folder
 from .model import load_model
 from .results import IDEAL_FOLDER, Results
 from .simulate import Progress, simulate
-from .status import SUCCESS
+from .status import INTERRUPTED, SUCCESS
 
 
 def run(
@@ -51,14 +51,20 @@ def run(
     model = load_model(model_path, overrides)
     folder = Path(out)
     check_folder(folder)
-    results = simulate(model, progress=progress)
-    companion = None
-    if ideal and model.has_clearance and results.status == SUCCESS:
-        companion = simulate(model.ideal())
-        results.summary["ideal_comparison"] = {"folder": IDEAL_FOLDER, "status": companion.status}
-        if companion.status != SUCCESS:
-            companion = None
-    with stop_requests():  # a Ctrl-C now must not leave a half-written folder
+    # One block from the first step to the last file: a Ctrl-C or SIGTERM at any moment in it
+    # is a request the runs act on, so nothing computed is lost to it (interrupts.py).
+    with stop_requests():
+        results = simulate(model, progress=progress)
+        companion = None
+        if ideal and model.has_clearance and results.status == SUCCESS:
+            try:
+                companion = simulate(model.ideal())
+                status = companion.status
+            except KeyboardInterrupt:  # during its set-up: the run above is kept
+                status = INTERRUPTED
+            results.summary["ideal_comparison"] = {"folder": IDEAL_FOLDER, "status": status}
+            if status != SUCCESS:
+                companion = None
         results.save(folder)
         _remove_companion(folder / IDEAL_FOLDER)  # an earlier run's: never mix two runs
         if companion is not None:

@@ -18,7 +18,7 @@ import pandas as pd
 from ._version import __version__
 from .assembly import assemble, redundant_equations
 from .energy import EnergyMonitor
-from .interrupts import stop_requests
+from .interrupts import interruptible, stop_requests
 from .kernels import loop
 from .kernels.codes import N_COUNTERS, Counter, Formulation, Method, Status
 from .kernels.dynamics import Problem, make_dynamics_scratch
@@ -155,64 +155,66 @@ def simulate(
         Time series, events and summary; partial, with a non-success status, if the run
         failed or was interrupted.
     """
-    solver = model.solver
-    system = build_system(model)
-    assembly = assemble(model, build_system(model, ideal=True))  # journals centred
-    # of the system that runs, without the clearance joints' rows
-    redundant = redundant_equations(system, assembly.y0) if assembly.redundant else 0
-    if redundant:  # rows report the least-norm multipliers (kernels.formulations)
-        system = system._replace(mechanism=system.mechanism._replace(redundant=True))
-    outside = sliders_outside_guides(model, assembly.y0)
-    if outside:
-        raise ModelError(outside)
-    n_state = assembly.y0.shape[0]
-    t0 = 0.0 if initial is None else initial.time
-    t_end = t0 + solver.t_end
-    output_times = _output_times(t0, solver.t_end, solver.output_interval)
-    ctl = loop.Control(
-        rtol=solver.rtol,
-        atol=solver.atol,
-        min_step=solver.min_step,
-        max_step=solver.max_step,
-        t_end=t_end,
-        max_steps=solver.max_steps,
-        output_times=output_times,
-        rows_per_step=math.ceil(solver.max_step / solver.output_interval) + 2,
-        snapshot_times=_snapshot_times(t0, solver.t_end, solver.wear_snapshot_interval),
-        max_violation=solver.max_constraint_violation,
-    )
-    integ = _integrator(solver.method, n_state)
-    problem, log, scratch, states, element_logs = _kernel_arrays(
-        system,
-        FORMULATIONS[solver.formulation],
-        n_state,
-        len(model.events),
-        ctl.snapshot_times.shape[0],
-    )
-    journals, sliders = states
-    impacts: list[dict] = []
-    columns = column_names(model)
-    buffer = np.zeros((max(ctl.rows_per_step * 4, 1024), len(columns)))
-    blocks: list[np.ndarray] = []
-    events: list[tuple[float, str, str]] = []
+    # Set-up and compiling lose nothing when cut short: a Ctrl-C there stops at once.
+    with interruptible():
+        solver = model.solver
+        system = build_system(model)
+        assembly = assemble(model, build_system(model, ideal=True))  # journals centred
+        # of the system that runs, without the clearance joints' rows
+        redundant = redundant_equations(system, assembly.y0) if assembly.redundant else 0
+        if redundant:  # rows report the least-norm multipliers (kernels.formulations)
+            system = system._replace(mechanism=system.mechanism._replace(redundant=True))
+        outside = sliders_outside_guides(model, assembly.y0)
+        if outside:
+            raise ModelError(outside)
+        n_state = assembly.y0.shape[0]
+        t0 = 0.0 if initial is None else initial.time
+        t_end = t0 + solver.t_end
+        output_times = _output_times(t0, solver.t_end, solver.output_interval)
+        ctl = loop.Control(
+            rtol=solver.rtol,
+            atol=solver.atol,
+            min_step=solver.min_step,
+            max_step=solver.max_step,
+            t_end=t_end,
+            max_steps=solver.max_steps,
+            output_times=output_times,
+            rows_per_step=math.ceil(solver.max_step / solver.output_interval) + 2,
+            snapshot_times=_snapshot_times(t0, solver.t_end, solver.wear_snapshot_interval),
+            max_violation=solver.max_constraint_violation,
+        )
+        integ = _integrator(solver.method, n_state)
+        problem, log, scratch, states, element_logs = _kernel_arrays(
+            system,
+            FORMULATIONS[solver.formulation],
+            n_state,
+            len(model.events),
+            ctl.snapshot_times.shape[0],
+        )
+        journals, sliders = states
+        impacts: list[dict] = []
+        columns = column_names(model)
+        buffer = np.zeros((max(ctl.rows_per_step * 4, 1024), len(columns)))
+        blocks: list[np.ndarray] = []
+        events: list[tuple[float, str, str]] = []
 
-    y0 = assembly.y0
-    if initial is not None:
-        _check_initial(initial, y0, journals, sliders)
-        y0 = initial.y
-        journals.wear[:] = initial.wear
-        journals.contact_on[:] = initial.contact_on
-        journals.impact_speed[:] = initial.impact_speed
-        sliders.wear[:] = initial.slider_wear
-        sliders.contact_on[:] = initial.slider_contact_on
-        sliders.impact_speed[:] = initial.slider_impact_speed
+        y0 = assembly.y0
+        if initial is not None:
+            _check_initial(initial, y0, journals, sliders)
+            y0 = initial.y
+            journals.wear[:] = initial.wear
+            journals.contact_on[:] = initial.contact_on
+            journals.impact_speed[:] = initial.impact_speed
+            sliders.wear[:] = initial.slider_wear
+            sliders.contact_on[:] = initial.slider_contact_on
+            sliders.impact_speed[:] = initial.slider_impact_speed
 
-    energy = EnergyMonitor(model, columns)
-    wall_start = time.perf_counter()
-    status = Status.RUNNING
-    args = _by_reference(problem, integ, system.events, ctl, log, scratch)
-    if not loop.start(*args[:3], *args[4:], t0, y0, solver.initial_step):
-        status = Status.SINGULAR
+        energy = EnergyMonitor(model, columns)
+        wall_start = time.perf_counter()
+        status = Status.RUNNING
+        args = _by_reference(problem, integ, system.events, ctl, log, scratch)
+        if not loop.start(*args[:3], *args[4:], t0, y0, solver.initial_step):
+            status = Status.SINGULAR
     chunk = min(solver.t_end, MIN_CHUNK_STEPS * solver.max_step)
     budget = MIN_CHUNK_STEPS  # steps a chunk may take, so a stalled run still hands back
     with stop_requests() as stop_requested:

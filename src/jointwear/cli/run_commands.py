@@ -10,7 +10,7 @@ import typer
 from rich.markup import escape
 from rich.table import Table
 
-from .common import ModelPath, Overrides, err, fail, out
+from .common import PLAIN, ModelPath, Overrides, err, fail, out
 from .progress import CompileNotice, ProgressBar
 
 if TYPE_CHECKING:
@@ -62,7 +62,8 @@ def run(
     except KeyboardInterrupt:
         if compiling.active:
             raise compiling.interrupted() from None
-        raise
+        err.print("interrupted before the run started; nothing was written", **PLAIN)
+        raise typer.Exit(code=130) from None
     finally:
         compiling.bar.close()
         bar.close()

@@ -1,0 +1,61 @@
+"""The ``jointwear`` executable: the command-line app, with signals and surprises as one line.
+
+Ctrl-C and SIGTERM are alike everywhere: inside a run they are requests the run acts on at a
+safe point (``interrupts``); anywhere else (imports, validation) the process ends at once with
+one line and exit code 130. An error that escapes a command is a bug: it is reported in one
+line with exit code 70, and ``JOINTWEAR_DEBUG=1`` shows its traceback.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import signal
+import sys
+
+INTERRUPTED = 130  # 128 + SIGINT, the shells' convention
+INTERNAL_ERROR = 70  # EX_SOFTWARE (sysexits.h)
+DEBUG_VARIABLE = "JOINTWEAR_DEBUG"
+
+
+def _interrupt(signum: int, frame: object) -> None:
+    raise KeyboardInterrupt
+
+
+def main(argv: list[str] | None = None) -> None:
+    """Run the command line ``argv`` (default ``sys.argv[1:]``) and exit with its code."""
+    signal.signal(signal.SIGTERM, _interrupt)
+    try:
+        sys.exit(_run(argv))
+    except KeyboardInterrupt:
+        _say("interrupted")
+        sys.exit(INTERRUPTED)
+
+
+def _run(argv: list[str] | None) -> int:
+    from .cli import app  # inside main's try: a Ctrl-C during these imports is an interrupt
+
+    try:  # typer handles usage errors (exit 2), typer.Exit and Ctrl-C (exit 130) itself
+        app(args=argv, prog_name="jointwear")
+    except RecursionError:
+        _say("error: the input is nested too deeply to read (a model, --set, --vary or sweep file)")
+        return 2
+    except Exception as error:  # the last net: one line, never a traceback
+        if os.environ.get(DEBUG_VARIABLE):
+            raise
+        _say(
+            f"internal error (a bug in jointwear; please report it with the command): "
+            f"{type(error).__name__}: {_one_line(str(error))}; {DEBUG_VARIABLE}=1 shows the "
+            "traceback"
+        )
+        return INTERNAL_ERROR
+    return 0
+
+
+def _one_line(text: str) -> str:
+    return " ".join(text.split())
+
+
+def _say(text: str) -> None:
+    with contextlib.suppress(OSError):  # stderr closed: nothing more to do
+        print(text, file=sys.stderr, flush=True)
