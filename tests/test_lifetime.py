@@ -25,6 +25,7 @@ from typer.testing import CliRunner
 
 import jointwear as jw
 from jointwear.cli import app
+from jointwear.io import write_text
 from jointwear.simulate import simulate
 from jointwear.studies.life import files as lifetime_files
 from jointwear.studies.life import update as lifetime_update
@@ -494,10 +495,16 @@ def test_cli_life_exit_codes(tmp_path):
     assert not (tmp_path / "figures").exists()
     # An earlier run's figures do not stay beside a new run's tables.
     (tmp_path / "figures").mkdir()
-    (tmp_path / "figures" / "life_wear.png").write_bytes(b"old")
+    write_text(tmp_path / "figures" / "life_wear.png", "an earlier run's")
     again = invoke("life", FOURBAR, "--cycles", 2, "--out", tmp_path, "--no-figures")
     assert again.exit_code == 0, again.output
     assert not (tmp_path / "figures" / "life_wear.png").exists()
+    # A file of the user's of that name is never replaced: the run is refused before it starts.
+    (tmp_path / "figures" / "life_wear.png").write_bytes(b"the user's")
+    refused = invoke("life", FOURBAR, "--cycles", 2, "--out", tmp_path)
+    assert refused.exit_code == 2
+    assert "life_wear.png exists and was not written by jointwear" in refused.output
+    assert (tmp_path / "figures" / "life_wear.png").read_bytes() == b"the user's"
 
 
 def test_sweep_of_life_runs_tabulates_their_summaries(tmp_path):

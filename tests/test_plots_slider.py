@@ -20,6 +20,7 @@ from jointwear.figures.slider import (
     save_slider_figures,
     tilt_limit,
 )
+from jointwear.io import write_text
 
 PISTON = EXAMPLES / "slider_crank_piston_clearance.toml"
 # About 1.2 free-crank turns (the crank slows at mid-stroke); snapshots at 0.03 and 0.06 s.
@@ -65,12 +66,14 @@ def test_save_slider_figures_writes_every_png(piston, tmp_path):
 
 
 def test_figure_folder_draws_the_slider_figures_only(piston, tmp_path):
-    (tmp_path / "fig8_wear_sectors.png").write_bytes(b"left by a revolute run")
+    write_text(tmp_path / "fig8_wear_sectors.png", "left by a revolute run")  # jointwear's
+    (tmp_path / "fig9_wear_polar.png").write_bytes(b"the user's own, of the same name")
     paths = save_figures(piston, tmp_path, animation=False)
     names = {p.name for p in paths}
     assert names == {"energy.png", *(f"{n}.png" for n in SLIDER_FIGURES)}
     assert names <= ALL_FIGURES
     assert not (tmp_path / "fig8_wear_sectors.png").exists()
+    assert (tmp_path / "fig9_wear_polar.png").read_bytes() == b"the user's own, of the same name"
 
 
 def test_no_slider_joints_no_figures(tmp_path):

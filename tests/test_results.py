@@ -11,6 +11,7 @@ import pytest
 from runs import EXAMPLES, FOURBAR_COLUMNS
 
 import jointwear as jw
+from jointwear.io import RECORD
 from jointwear.kernels.codes import Status
 from jointwear.status import status_message
 
@@ -63,7 +64,8 @@ def test_save_then_load_gives_the_same_results(request, tmp_path, example):
     folder = results.save(tmp_path / "out")
     assert folder == tmp_path / "out"
     files = FILES + (CLEARANCE_FILES if example == "fourbar" else ())
-    assert sorted(p.name for p in folder.iterdir()) == sorted(files)
+    assert sorted(p.name for p in folder.iterdir()) == sorted((*files, RECORD))
+    assert json.loads((folder / RECORD).read_text()) == sorted(files)  # each file recorded
     assert_same_results(jw.load_results(folder), results)
 
 

@@ -3,15 +3,21 @@
 from __future__ import annotations
 
 import os
+import tempfile
 from collections.abc import Sequence
 from pathlib import Path
 
 from .interrupts import stop_requests
-from .io import check_folder
+from .io import check_folder, claim, remove_folder
 from .model import load_model
 from .results import IDEAL_FOLDER, Results
+from .results.run_results import FILES as RESULT_FILES
 from .simulate import Progress, simulate
 from .status import INTERRUPTED, SUCCESS
+
+FIGURES = "figures"  # subfolder of the figures and the animation
+RESCUE_PREFIX = "jointwear-rescued-"  # results that could not be written where asked go to a
+# new folder of the system's temporary folder with this prefix (summary "not_written")
 
 
 def run(
@@ -30,7 +36,9 @@ def run(
     model_path
         TOML model file.
     out
-        Results folder (created; existing files are replaced).
+        Results folder (created). Only files jointwear wrote there are replaced
+        (``jointwear.io``); if it cannot be written when the run ends, the results go to a
+        new temporary folder, named with the error in the summary's ``not_written``.
     overrides
         ``dotted.path=value`` settings applied before validation (as ``--set``).
     figures
@@ -51,6 +59,7 @@ def run(
     model = load_model(model_path, overrides)
     folder = Path(out)
     check_folder(folder)
+    claim(folder, _files(figures, ideal and model.has_clearance))
     # One block from the first step to the last file: a Ctrl-C or SIGTERM at any moment in it
     # is a request the runs act on, so nothing computed is lost to it (interrupts.py).
     with stop_requests():
@@ -65,23 +74,51 @@ def run(
             results.summary["ideal_comparison"] = {"folder": IDEAL_FOLDER, "status": status}
             if status != SUCCESS:
                 companion = None
-        results.save(folder)
-        _remove_companion(folder / IDEAL_FOLDER)  # an earlier run's: never mix two runs
-        if companion is not None:
-            companion.save(folder / IDEAL_FOLDER)
+        try:
+            _save(results, companion, folder)
+        except OSError as error:  # unwritable now, or a file that appeared since the claim
+            rescue = Path(tempfile.mkdtemp(prefix=RESCUE_PREFIX))
+            results.summary["not_written"] = {
+                "folder": str(folder),
+                "error": _describe(error),
+                "saved_in": str(rescue),
+            }
+            _save(results, companion, rescue)
+            return results
         if figures and len(results.timeseries) > 1:
             from .figures.folder import save_figures  # matplotlib only when figures are wanted
 
-            save_figures(results, folder / "figures", ideal=companion)
+            try:
+                save_figures(results, folder / FIGURES, ideal=companion)
+            except OSError as error:
+                results.summary["not_written"] = {
+                    "folder": str(folder / FIGURES),
+                    "error": _describe(error),
+                    "saved_in": None,
+                }
     return results
 
 
-def _remove_companion(folder: Path) -> None:
-    """Remove an earlier companion results folder (only files a results folder holds)."""
-    if not (folder / "model.json").is_file():
-        return
-    for file in folder.iterdir():
-        if file.is_file() and file.suffix in (".json", ".csv", ".parquet"):
-            file.unlink()
-    if not any(folder.iterdir()):
-        folder.rmdir()
+def _save(results: Results, companion: Results | None, folder: Path) -> None:
+    results.save(folder)
+    remove_folder(folder / IDEAL_FOLDER)  # an earlier run's: never mix two runs
+    if companion is not None:
+        companion.save(folder / IDEAL_FOLDER)
+
+
+def _files(figures: bool, ideal: bool) -> list[str]:
+    """Every file a run may write in its folder, relative to it."""
+    from .figures.names import ALL_FIGURES
+
+    names = [*RESULT_FILES, f"{IDEAL_FOLDER}/"]
+    if ideal:
+        names += [f"{IDEAL_FOLDER}/{name}" for name in RESULT_FILES]
+    if figures:
+        names += [f"{FIGURES}/{name}" for name in sorted(ALL_FIGURES)]
+    return names
+
+
+def _describe(error: OSError) -> str:
+    """An OSError in one line: what failed, and on which file."""
+    where = f": {error.filename}" if error.filename else ""
+    return " ".join(f"{error.strerror or error}{where}".split())

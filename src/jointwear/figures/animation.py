@@ -27,6 +27,7 @@ from matplotlib.figure import Figure  # figures without pyplot: no global backen
 from matplotlib.patches import Circle, Rectangle
 from PIL import Image
 
+from ..io import make_folder, write_atomic
 from ..model import Model
 from ..model.sections import RevoluteJoint, TranslationalJoint
 from ..results import Results
@@ -56,7 +57,10 @@ class _GifWriter(AbstractMovieWriter):
     def finish(self) -> None:
         first, *rest = self._images
         duration = round(1000 / self.fps)  # [ms] per frame
-        first.save(self.outfile, save_all=True, append_images=rest, duration=duration, loop=0)
+        first.save(
+            self.outfile, format="GIF", save_all=True, append_images=rest, duration=duration,
+            loop=0,
+        )  # fmt: skip
 
 
 def _frames(results: Results, turns: float, frames: int) -> pd.DataFrame:
@@ -342,8 +346,8 @@ def save_animation(
     """
     scene = mechanism_scene(results, turns=turns, frames=frames, clearance_scale=clearance_scale)
     out = Path(path)
-    out.parent.mkdir(parents=True, exist_ok=True)
-    FuncAnimation(scene.figure, scene.draw, frames=len(scene.times)).save(
-        out, writer=_GifWriter(fps=fps)
+    make_folder(out.parent)
+    animation = FuncAnimation(scene.figure, scene.draw, frames=len(scene.times))
+    return write_atomic(
+        out, lambda temporary: animation.save(temporary, writer=_GifWriter(fps=fps))
     )
-    return out

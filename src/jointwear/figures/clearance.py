@@ -19,6 +19,8 @@ from matplotlib.figure import Figure  # figures without pyplot: no global backen
 from ..model.sections import RevoluteJoint
 from ..results import Results
 from ..results.clearance import UM
+from .files import save_png
+from .names import CLEARANCE_FIGURES
 from .run import crank_driver
 
 PROFILE_SHARE = 0.15  # Fig. 10: the largest wear depth is drawn as this share of the radius
@@ -26,13 +28,6 @@ STILL_ANGLE = 1e-6  # [rad] a body whose angle spans less does not rotate (a sli
 CLEARANCE_COLOR = "tab:red"
 IDEAL_COLOR = "0.15"
 SURFACES = ("journal", "bearing")  # the paper's Figs. 8-10 show the journal first
-CLEARANCE_FIGURES = (
-    "fig7_dynamics",
-    "fig7d_orbit",
-    "fig8_wear_sectors",
-    "fig9_wear_polar",
-    "fig10_profile",
-)  # the file names (.png) save_clearance_figures writes
 MM = 1e3  # [mm/m]
 
 
@@ -359,7 +354,6 @@ def save_clearance_figures(
     if not _clearance_joints(results):
         return []
     path = Path(folder)
-    path.mkdir(parents=True, exist_ok=True)
     figures = dict(zip(CLEARANCE_FIGURES, (
         lambda r: plot_dynamics(r, ideal),
         plot_orbit,
@@ -367,8 +361,4 @@ def save_clearance_figures(
         plot_wear_polar,
         plot_wear_profile,
     ), strict=True))  # fmt: skip
-    written = []
-    for name, draw in figures.items():
-        draw(results).savefig(path / f"{name}.png", dpi=150)
-        written.append(path / f"{name}.png")
-    return written
+    return [save_png(draw(results), path / f"{name}.png") for name, draw in figures.items()]

@@ -4,20 +4,14 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from ..io import remove
 from ..results import Results
 from .animation import save_animation
-from .clearance import CLEARANCE_FIGURES, save_clearance_figures
+from .clearance import save_clearance_figures
+from .files import save_png
+from .names import ALL_FIGURES, ANIMATION
 from .run import crank_driver, plot_cycle, plot_energy
-from .slider import SLIDER_FIGURES, save_slider_figures
-
-ANIMATION = "mechanism.gif"
-ALL_FIGURES = {
-    "energy.png",
-    "cycle.png",
-    *(f"{n}.png" for n in CLEARANCE_FIGURES),
-    *(f"{n}.png" for n in SLIDER_FIGURES),
-    ANIMATION,
-}
+from .slider import save_slider_figures
 
 
 def save_figures(
@@ -32,19 +26,15 @@ def save_figures(
     ours that do not apply to these results are removed.
     """
     path = Path(folder)
-    path.mkdir(parents=True, exist_ok=True)
     figures = {"energy": plot_energy}
     if crank_driver(results) is not None:
         figures["cycle"] = plot_cycle
-    written = []
-    for name, draw in figures.items():
-        draw(results).savefig(path / f"{name}.png", dpi=150)
-        written.append(path / f"{name}.png")
+    written = [save_png(draw(results), path / f"{name}.png") for name, draw in figures.items()]
     written += save_clearance_figures(results, path, ideal)
     written += save_slider_figures(results, path)
     if animation:
         written.append(save_animation(results, path / ANIMATION))
     kept = {p.name for p in written} | (set() if animation else {ANIMATION})
     for name in ALL_FIGURES - kept:  # left by an earlier run of another model
-        (path / name).unlink(missing_ok=True)
+        remove(path / name)
     return written

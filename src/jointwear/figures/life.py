@@ -19,6 +19,7 @@ from ..model import Model
 from ..results.clearance import UM
 from ..studies.life.files import FIGURE_FILES
 from ..studies.life.records import GROWTH_MARK, cycles_at, driver_columns
+from .files import save_png
 
 PROFILE_COUNTS = 5  # profiles drawn: at about 1/5, 2/5, ... of the cycles reached
 PLOT_ORDER = ("journal", "bearing")  # the journal first, as in the paper's Figs. 8-10
@@ -102,8 +103,5 @@ def save_life_figures(
     model: Model, driver: str, table: pd.DataFrame, profiles: pd.DataFrame, folder: Path
 ) -> list[Path]:
     """Write life_wear.png and life_profiles.png into ``folder``; return their paths."""
-    folder.mkdir(parents=True, exist_ok=True)
     figures = (plot_life_wear(model, table, driver), plot_life_profiles(model, table, profiles))
-    for name, fig in zip(FIGURE_FILES, figures, strict=True):
-        fig.savefig(folder / name, dpi=150)
-    return [folder / name for name in FIGURE_FILES]
+    return [save_png(fig, folder / name) for name, fig in zip(FIGURE_FILES, figures, strict=True)]

@@ -23,13 +23,10 @@ from ..model.sections import RevoluteJoint, TranslationalJoint
 from ..model.slide_clearance import SlideClearance
 from ..results import Results
 from ..results.clearance import UM
+from .files import save_png
+from .names import SLIDER_FIGURES
 from .run import crank_driver
 
-SLIDER_FIGURES = (
-    "slider_motion",
-    "slider_corner_forces",
-    "slider_wear",
-)  # the file names (.png) save_slider_figures writes
 MM = 1e3  # [mm/m]
 MRAD = 1e3  # [mrad/rad]
 TURN = 360.0  # [deg]
@@ -290,10 +287,8 @@ def save_slider_figures(results: Results, folder: str | Path) -> list[Path]:
     if not results.model.slider_joints:
         return []
     path = Path(folder)
-    path.mkdir(parents=True, exist_ok=True)
     draws = (plot_slider_motion, plot_corner_forces, plot_guide_wear)
-    written = []
-    for name, draw in zip(SLIDER_FIGURES, draws, strict=True):
-        draw(results).savefig(path / f"{name}.png", dpi=150)
-        written.append(path / f"{name}.png")
-    return written
+    return [
+        save_png(draw(results), path / f"{name}.png")
+        for name, draw in zip(SLIDER_FIGURES, draws, strict=True)
+    ]

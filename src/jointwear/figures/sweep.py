@@ -8,11 +8,15 @@ from __future__ import annotations
 
 import re
 from collections.abc import Mapping, Sequence
+from contextlib import suppress
 from pathlib import Path
 
 import numpy as np
 import pandas as pd
 from matplotlib.figure import Figure
+
+from ..io import ForeignFileError, remove
+from .files import save_png
 
 LOG_AXIS_RATIO = 100.0  # positive values spanning more than this get a logarithmic axis
 LONG_LENGTH = (1e-3, "m", 1.0)  # lengths in a column reaching this [m] are drawn in metres
@@ -112,17 +116,16 @@ def save_sweep_figures(
 ) -> list[Path]:
     """Write one figure per headline column that has a value; return the paths.
 
-    ``texts`` as for ``plot_sweep``. PNGs in ``folder`` from an earlier sweep that are not
-    drawn again are removed.
+    ``texts`` as for ``plot_sweep``. PNGs that an earlier sweep wrote in ``folder`` and that
+    are not drawn again are removed (only jointwear's own files, ``jointwear.io.remove``).
     """
     path = Path(folder)
-    path.mkdir(parents=True, exist_ok=True)
     written = []
     for column in columns:
         if pd.to_numeric(table[column], errors="coerce").notna().any():
             file = path / f"{re.sub(r'[^A-Za-z0-9._-]+', '_', column)}.png"
-            plot_sweep(table, column, texts).savefig(file, dpi=120)
-            written.append(file)
+            with suppress(ForeignFileError):  # a file of the user's of that name is kept
+                written.append(save_png(plot_sweep(table, column, texts), file, dpi=120))
     for stale in set(path.glob("*.png")) - set(written):
-        stale.unlink()
+        remove(stale)
     return written

@@ -19,7 +19,7 @@ import pandas as pd
 import pyarrow as pa
 from pyarrow import csv
 
-from ..io import write_text
+from ..io import make_folder, remove, write_atomic, write_text
 from ..model import Model, parse_model
 from .run_state import RunState
 
@@ -59,23 +59,28 @@ class Results:
 
     def save(self, folder: str | os.PathLike) -> Path:
         """Write the results folder (created if needed); return its path."""
-        path = Path(folder)
-        path.mkdir(parents=True, exist_ok=True)
-        (path / "summary.json").unlink(missing_ok=True)  # until rewritten, not a complete folder
+        path = make_folder(folder)
+        remove(path / "summary.json")  # until rewritten, not a complete folder
         write_text(path / "model.json", self.model.model_dump_json(indent=2))
         _write_csv(self.timeseries, path / "timeseries.csv")
-        self.timeseries.to_parquet(path / "timeseries.parquet", index=False)
+        write_atomic(
+            path / "timeseries.parquet", lambda p: self.timeseries.to_parquet(p, index=False)
+        )
         _write_csv(self.events, path / "events.csv")
         for name in _CLEARANCE_TABLES:
             if self.has_clearance:
                 _write_csv(getattr(self, name), path / f"{name}.csv")
             else:  # an earlier run's, with clearance joints
-                (path / f"{name}.csv").unlink(missing_ok=True)
+                remove(path / f"{name}.csv")
         write_text(path / "summary.json", json.dumps(self.summary, indent=2))  # last: complete
         return path
 
 
 _CLEARANCE_TABLES = ("wear", "wear_snapshots", "impacts")
+FILES = (  # what a results folder may hold, for ``jointwear.io.claim``
+    "summary.json", "model.json", "timeseries.csv", "timeseries.parquet", "events.csv",
+    *(f"{name}.csv" for name in _CLEARANCE_TABLES),
+)  # fmt: skip
 # Read as floats even when every value is whole ("5" is still 5.0).
 _FLOAT_COLUMNS = {"angle_deg": float, "position_m": float, "guide_position_m": float,
                   "depth_m": float, "time_s": float}  # fmt: skip
@@ -86,11 +91,9 @@ def _write_csv(table: pd.DataFrame, path: Path) -> None:
 
     pyarrow's writer is ten times faster than pandas' on a time series.
     """
-    csv.write_csv(
-        pa.Table.from_pandas(table, preserve_index=False),
-        path,
-        csv.WriteOptions(quoting_style="needed"),
-    )
+    arrow = pa.Table.from_pandas(table, preserve_index=False)
+    options = csv.WriteOptions(quoting_style="needed")
+    write_atomic(path, lambda temporary: csv.write_csv(arrow, temporary, options))
 
 
 def load_results(folder: str | os.PathLike) -> Results:

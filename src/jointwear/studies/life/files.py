@@ -17,7 +17,7 @@ from pathlib import Path
 
 import pandas as pd
 
-from ...io import check_folder, write_atomic, write_text
+from ...io import check_folder, claim, make_folder, remove, write_atomic, write_text
 from ...model import ModelError
 from ...results.clearance import WEAR_COLUMNS
 from ...results.run_state import RunState, load_run_state
@@ -31,6 +31,10 @@ FIGURE_FILES = ("life_wear.png", "life_profiles.png")  # what figures.life write
 CHECKPOINTS = "checkpoint"
 CHECKPOINT = "checkpoint.json"
 PROFILE_COLUMNS = ["update", "cycles", *WEAR_COLUMNS]
+FILES = (  # the fixed names a life run writes, for ``jointwear.io.claim``
+    TABLE, PROFILES, SUMMARY, MODEL, f"{CHECKPOINTS}/{CHECKPOINT}",
+    *(f"{FIGURES}/{name}" for name in FIGURE_FILES),
+)  # fmt: skip
 
 
 @dataclass(frozen=True)
@@ -64,13 +68,14 @@ def start_folder(folder: Path, columns: list[str], record: dict) -> None:
     ``record`` (settings and resolved model) is kept in the checkpoint, for ``--resume``.
     """
     check_folder(folder)
-    (folder / CHECKPOINTS).mkdir(parents=True, exist_ok=True)
-    (folder / CHECKPOINTS / CHECKPOINT).unlink(missing_ok=True)  # first: it names the states
-    (folder / SUMMARY).unlink(missing_ok=True)
+    claim(folder, FILES)
+    make_folder(folder / CHECKPOINTS)
+    remove(folder / CHECKPOINTS / CHECKPOINT)  # first: it names the states
+    remove(folder / SUMMARY)
     for name in FIGURE_FILES:  # an earlier run's: never mix two runs
-        (folder / FIGURES / name).unlink(missing_ok=True)
+        remove(folder / FIGURES / name)
     for old in (folder / CHECKPOINTS).glob("state_*.npz"):
-        old.unlink()
+        remove(old)
     _write_rows(folder / TABLE, columns, [])
     _write_rows(folder / PROFILES, PROFILE_COLUMNS, [])
     write_text(folder / MODEL, json.dumps(record["model"], indent=2))
@@ -101,7 +106,7 @@ def save_checkpoint(folder: Path, point: Checkpoint, record: dict) -> None:
     write_text(folder / CHECKPOINTS / CHECKPOINT, json.dumps(data, indent=2))
     for old in (folder / CHECKPOINTS).glob("state_*.npz"):
         if old.name != state:
-            old.unlink()
+            remove(old)
 
 
 def load_checkpoint(folder: Path, record: dict) -> Checkpoint:

@@ -24,7 +24,7 @@ from dataclasses import dataclass
 from importlib import import_module
 from pathlib import Path
 
-from ...io import write_text
+from ...io import make_folder, remove, write_text
 from ...model.errors import ModelError
 from ...status import ERROR, INTERRUPTED, SUCCESS
 
@@ -79,8 +79,8 @@ def run_case(task: CaseTask) -> Outcome:
     folder = Path(task.folder)
     start = time.perf_counter()
     try:
-        folder.mkdir(parents=True, exist_ok=True)
-        (folder / CASE_FILE).unlink(missing_ok=True)  # until rewritten, the case is not done
+        make_folder(folder)
+        remove(folder / CASE_FILE)  # until rewritten, the case is not done
         summary = _simulate(task)
         status = summary.get("status", SUCCESS)
         error = "" if status == SUCCESS else summary.get("message", status)

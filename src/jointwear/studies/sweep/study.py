@@ -27,13 +27,14 @@ from pathlib import Path
 import pandas as pd
 
 from ...interrupts import stop_requests
-from ...io import check_folder, write_atomic, write_text
+from ...io import check_folder, claim, make_folder, write_atomic, write_text
 from ...model import Model, ModelError, load_model
 from ...status import NOT_RUN, SUCCESS
 from .cases import Case, check_vary, make_cases, si_value, value_text
 from .runners import CaseTask, Outcome, read_record, run_dask, run_local, run_serial
 
 CASES_FOLDER = "cases"
+FIGURES = "figures"
 FIXED_COLUMNS = ("case", "status", "error", "wall_s")  # the varied paths follow "case"
 
 
@@ -127,6 +128,7 @@ def sweep(
     models = _load_cases(model_path, overrides, cases)
     folder = Path(out).resolve()
     check_folder(folder)
+    claim(folder, ("sweep.json", "sweep.csv", "sweep.parquet", f"{CASES_FOLDER}/", f"{FIGURES}/"))
     tasks = [_task(model_path, folder, overrides, cycles, c, models[c.id]) for c in cases]
     _write_json(folder / "sweep.json", _plan_record(model_path, texts, overrides, cycles, cases))
 
@@ -157,7 +159,7 @@ def sweep(
                 for path in texts
             }
             drawn = save_sweep_figures(
-                table, _headline_columns(table, models), given, folder / "figures"
+                table, _headline_columns(table, models), given, folder / FIGURES
             )
     return SweepResults(folder, table, skipped, drawn, interrupted)
 
@@ -351,7 +353,7 @@ def _headline_columns(table: pd.DataFrame, models: Mapping[str, Model]) -> list[
 
 def _write_table(table: pd.DataFrame, folder: Path) -> None:
     """``sweep.csv`` and ``sweep.parquet``, each replaced at once (never half written)."""
-    folder.mkdir(parents=True, exist_ok=True)
+    make_folder(folder)
     parquet = table.copy()
     for column in parquet.columns:
         if not pd.api.types.is_object_dtype(parquet[column]):
@@ -364,7 +366,7 @@ def _write_table(table: pd.DataFrame, folder: Path) -> None:
 
 
 def _write_json(path: Path, data: dict) -> None:
-    path.parent.mkdir(parents=True, exist_ok=True)
+    make_folder(path.parent)
     write_text(path, json.dumps(data, indent=2))
 
 
