@@ -11,6 +11,7 @@ from .interrupts import stop_requests
 from .io import check_folder, claim, remove_folder
 from .model import load_model
 from .results import IDEAL_FOLDER, Results
+from .results.run_results import CLEARANCE_FILES
 from .results.run_results import FILES as RESULT_FILES
 from .simulate import Progress, simulate
 from .status import INTERRUPTED, SUCCESS
@@ -59,7 +60,7 @@ def run(
     model = load_model(model_path, overrides)
     folder = Path(out)
     check_folder(folder)
-    claim(folder, _files(figures, ideal and model.has_clearance))
+    claim(folder, _files(model.has_clearance, figures, ideal and model.has_clearance))
     # One block from the first step to the last file: a Ctrl-C or SIGTERM at any moment in it
     # is a request the runs act on, so nothing computed is lost to it (interrupts.py).
     with stop_requests():
@@ -106,13 +107,14 @@ def _save(results: Results, companion: Results | None, folder: Path) -> None:
         companion.save(folder / IDEAL_FOLDER)
 
 
-def _files(figures: bool, ideal: bool) -> list[str]:
+def _files(clearance: bool, figures: bool, ideal: bool) -> list[str]:
     """Every file a run may write in its folder, relative to it."""
     from .figures.names import ALL_FIGURES
 
-    names = [*RESULT_FILES, f"{IDEAL_FOLDER}/"]
-    if ideal:
-        names += [f"{IDEAL_FOLDER}/{name}" for name in RESULT_FILES]
+    tables = RESULT_FILES if clearance else RESULT_FILES[: -len(CLEARANCE_FILES)]
+    names = [*tables, f"{IDEAL_FOLDER}/"]
+    if ideal:  # the companion has no clearance joints
+        names += [f"{IDEAL_FOLDER}/{name}" for name in RESULT_FILES[: -len(CLEARANCE_FILES)]]
     if figures:
         names += [f"{FIGURES}/{name}" for name in sorted(ALL_FIGURES)]
     return names

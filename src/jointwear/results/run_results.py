@@ -77,9 +77,10 @@ class Results:
 
 
 _CLEARANCE_TABLES = ("wear", "wear_snapshots", "impacts")
-FILES = (  # what a results folder may hold, for ``jointwear.io.claim``
+CLEARANCE_FILES = tuple(f"{name}.csv" for name in _CLEARANCE_TABLES)
+FILES = (  # what a results folder may hold, clearance tables last, for ``jointwear.io.claim``
     "summary.json", "model.json", "timeseries.csv", "timeseries.parquet", "events.csv",
-    *(f"{name}.csv" for name in _CLEARANCE_TABLES),
+    *CLEARANCE_FILES,
 )  # fmt: skip
 # Read as floats even when every value is whole ("5" is still 5.0).
 _FLOAT_COLUMNS = {"angle_deg": float, "position_m": float, "guide_position_m": float,
