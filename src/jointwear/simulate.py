@@ -179,7 +179,10 @@ def simulate(
             t_end=t_end,
             max_steps=solver.max_steps,
             output_times=output_times,
-            rows_per_step=math.ceil(solver.max_step / solver.output_interval) + 2,
+            rows_per_step=min(
+                math.ceil(solver.max_step / solver.output_interval), len(output_times)
+            )
+            + 2,
             snapshot_times=_snapshot_times(t0, solver.t_end, solver.wear_snapshot_interval),
             max_violation=solver.max_constraint_violation,
         )

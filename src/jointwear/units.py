@@ -70,7 +70,7 @@ _KINDS: dict[str, _Kind] = {
 }
 
 _NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
-_UNIT = r"[^\W\d]\w*(?:\s*(?:\^|\*\*)\s*-?\d+)?"
+_UNIT = r"[^\W\d]\w*(?:\s*(?:\^|\*\*)\s*-?[1-9]\d?)?"  # powers 1 to 99, not 0
 _QUANTITY = re.compile(rf"\s*({_NUMBER})\s*((?:1\s*/\s*)?{_UNIT}(?:\s*[*/ ]\s*{_UNIT})*)?\s*")
 
 
@@ -144,10 +144,17 @@ def _to_si(value: object, dimension: str, expected: str) -> float:
     ureg = registry()
     try:
         quantity = ureg.Quantity(float(number), ureg.parse_units(units))
-    except pint.PintError as error:
-        raise ValueError(f"cannot read {value!r}: {error}; {expected}") from None
-    if quantity.dimensionality != ureg.get_dimensionality(dimension):
-        actual = _describe(quantity.dimensionality)
+        dimensionality = quantity.dimensionality
+        pure = [name for name, _ in quantity.unit_items() if _is_pure_number(name)]
+    except (pint.PintError, ArithmeticError, LookupError, ValueError) as error:
+        reason = " ".join(str(error).split()).rstrip(".") or type(error).__name__
+        raise ValueError(f"cannot read {value!r}: {reason}; {expected}") from None
+    if pure:
+        raise ValueError(f"{value!r}: '{pure[0]}' is a pure number, not a unit; {expected}")
+    if dimension == "[]" and not any(True for _ in quantity.unit_items()):
+        raise ValueError(f"{value!r} has no angle unit; {expected} (plain numbers are SI)")
+    if dimensionality != ureg.get_dimensionality(dimension):
+        actual = _describe(dimensionality)
         raise ValueError(f"{value!r} has units of {actual}; {expected}")
     if dimension == "1/[time]" and any(name.endswith("hertz") for name, _ in quantity.unit_items()):
         raise ValueError(
@@ -158,6 +165,14 @@ def _to_si(value: object, dimension: str, expected: str) -> float:
     if not math.isfinite(result):
         raise ValueError(f"{value!r} is not finite in SI units; {expected}")
     return result
+
+
+ANGLE_UNITS = frozenset({"radian", "degree", "arcminute", "arcsecond", "turn", "grade"})
+
+
+def _is_pure_number(unit: str) -> bool:
+    """Whether a pint unit is a dimensionless count (percent, ppm, dozen), not an angle."""
+    return unit not in ANGLE_UNITS and registry().get_dimensionality(unit) == {}
 
 
 def _quantity(dimension: str) -> BeforeValidator:

@@ -29,5 +29,13 @@ Overrides = Annotated[
 def fail(error: ModelError) -> typer.Exit:
     """Print a ``ModelError``'s problems on stderr, one per line; the exit (code 2) to raise."""
     for line in error.problems:
-        err.print(line, **PLAIN)
+        err.print(one_line(line), **PLAIN)
     return typer.Exit(code=2)
+
+
+def one_line(text: str) -> str:
+    """``text`` with control characters (a newline in a name) shown as escapes: one line."""
+    return "".join(
+        char if char.isprintable() or char == " " else char.encode("unicode_escape").decode()
+        for char in text
+    )

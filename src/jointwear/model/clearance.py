@@ -8,6 +8,9 @@ does not use is refused, so a model never carries a setting that silently does n
 translational joint's table is ``model.slide_clearance``.
 """
 
+import math
+from collections.abc import Callable
+from functools import partial
 from typing import Annotated, NamedTuple
 
 from annotated_types import Ge, Gt, Le
@@ -108,6 +111,8 @@ def _packed(clearance: "ContactKeys", law_key: str, laws: dict[str, Law]) -> Pac
     return PackedLaw(law.code, law.pack(values))
 
 
+DERIVED_CHECK_SHARES = (0.01, 0.1, 0.4)  # of the clearance: penetrations the laws must handle
+DERIVED_CHECK_FORCE = 1000.0  # [N] a load the Hertz patch must handle
 HERTZ_EXPONENT = 1.5  # the exponent the internal-cylinder stiffness formula is for
 
 
@@ -197,6 +202,34 @@ class ContactKeys(_LawKeys):
             )
         return lines
 
+    def _derived_problems(self, gap: float) -> list[str]:
+        """A problem if the contact law gives no finite positive value where ``check`` looks.
+
+        At 1, 10 and 40 % of the clearance ``gap`` [m], and for the Hertz patch at 1 kN: values
+        at the edges of floating point (a width of 1e300 m) overflow or vanish there.
+        """
+        values: dict[str, Callable[[], tuple[float, float]]] = {
+            f"force at {share:.0%} of the clearance": partial(self.elastic_force, share * gap)
+            for share in DERIVED_CHECK_SHARES
+        }
+        patch = getattr(self, "hertz_patch", None)
+        if patch is not None:
+            values[f"Hertz patch at {DERIVED_CHECK_FORCE:g} N"] = partial(
+                patch, DERIVED_CHECK_FORCE
+            )
+        for name, compute in values.items():
+            try:
+                usable = all(math.isfinite(v) and v > 0.0 for v in compute())
+            except (ArithmeticError, ValueError):
+                usable = False
+            if not usable:
+                return [
+                    f"the contact cannot be computed with these values (its {name} is not a "
+                    "finite positive number); check the sizes, moduli and stiffness against "
+                    "their units"
+                ]
+        return []
+
     def _pair(self, value: float | tuple[float, float]) -> tuple[float, float]:
         return (value, value) if isinstance(value, float | int) else value
 
@@ -257,6 +290,8 @@ class Clearance(ContactKeys):
                 f"contact_tolerance {self.contact_tolerance:g} m must be much smaller than the "
                 f"radial clearance {self.radial_clearance:g} m (default 1e-10 m)"
             )
+        if not problems:
+            problems = self._derived_problems(self.radial_clearance)
         if problems:
             raise ValueError("; ".join(problems))
         return self

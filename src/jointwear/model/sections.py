@@ -82,9 +82,11 @@ class RevoluteJoint(_Joint):
 
 
 def _nonzero(axis: tuple[float, float]) -> tuple[float, float]:
-    if math.hypot(*axis) == 0.0:
+    """The axis as a unit vector (any non-zero length is a direction)."""
+    length = math.hypot(*axis)
+    if length == 0.0:
         raise ValueError("the axis has zero length; give a direction, e.g. [1.0, 0.0]")
-    return axis
+    return (axis[0] / length, axis[1] / length)
 
 
 class TranslationalJoint(_Joint):
@@ -185,7 +187,8 @@ Load = Annotated[
     Gravity | PointForce | AppliedTorque | SpringDamper | RotationalSpringDamper,
     Field(discriminator="type"),
 ]
-PositiveTime = Annotated[Time, Gt(0)]
+# Solver times: above the resolution of float times near 1 s, and below 30,000 years.
+SolverTime = Annotated[Time, Ge(1e-15), Le(1e12)]
 
 
 class Solver(Table):
@@ -194,18 +197,18 @@ class Solver(Table):
     integrator: Annotated[str, one_of(INTEGRATORS, "integrator")] = "abm"
     rtol: Annotated[Number, Gt(0)] = 1e-6
     atol: Annotated[Number, Gt(0)] = 1e-8
-    min_step: PositiveTime = 1e-12
-    max_step: PositiveTime = 1e-3
-    initial_step: PositiveTime = 1e-6
+    min_step: SolverTime = 1e-12
+    max_step: SolverTime = 1e-3
+    initial_step: SolverTime = 1e-6
     formulation: Annotated[str, one_of(FORMULATIONS, "formulation")] = "augmented_lagrangian"
     penalty: Annotated[Number, Ge(1), Le(1e9)] = 1e6
     baumgarte_alpha: Annotated[Number, Ge(0)] = 5.0
     baumgarte_beta: Annotated[Number, Ge(0)] = 5.0
     max_constraint_violation: Annotated[Number, Gt(0)] = 1e-3
     max_energy_error: Annotated[Number, Gt(0)] = 1e-3
-    output_interval: PositiveTime = 1e-4
-    wear_snapshot_interval: PositiveTime | None = None  # default: a fifth of t_end
-    t_end: PositiveTime = 1.0
+    output_interval: SolverTime = 1e-4
+    wear_snapshot_interval: SolverTime | None = None  # default: a fifth of t_end
+    t_end: SolverTime = 1.0
     max_steps: Annotated[int, Strict(), Gt(0), Le(2**62)] = 10_000_000
     assembly_tolerance: Annotated[Length, Gt(0)] = 1e-10
 

@@ -44,6 +44,8 @@ class SlideClearance(ContactKeys):
     @model_validator(mode="after")
     def _consistent(self) -> "SlideClearance":
         problems = [*self._unused_keys(), *self._law_problems(), *self._slide_problems()]
+        if not problems:
+            problems = self._derived_problems(self.clearance_gap)
         if problems:
             raise ValueError("; ".join(problems))
         return self
