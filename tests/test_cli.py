@@ -208,7 +208,7 @@ def test_unknown_body_is_one_line_naming_field_problem_and_choices(tmp_path, com
         ("joints.3.type=revolute", "joints.3: no item '3'; names are pin; indices 0 to 0"),
         ("solver.t_end.x=1", "solver.t_end.x: solver.t_end is a value, not a table or an array"),
         ("solver.t_end", "--set solver.t_end: expected path=value, e.g. solver.t_end=0.5"),
-        ("solver.t_end=-1", "solver.t_end: got -1; must be > 0"),
+        ("solver.t_end=-1", "solver.t_end: got -1; must be >= 1e-15"),
     ],
 )
 def test_bad_override_exits_2(tmp_path, override, message):

@@ -97,6 +97,10 @@ def redundant_equations(system: System, y0: NDArray[np.float64]) -> int:
     return cq.shape[0] - _rank(cq)[0]
 
 
+def _finite(matrix: np.ndarray) -> bool:
+    return bool(np.all(np.isfinite(matrix)))
+
+
 def assemble(model: Model, system: System, tolerance: float | None = None) -> Assembly:
     """Solve the initial position and velocity analysis.
 
@@ -114,7 +118,7 @@ def assemble(model: Model, system: System, tolerance: float | None = None) -> As
     phi, cq, phi_t = _evaluate(system, q, qd)
     iterations = 0
     while np.max(np.abs(phi), initial=0.0) > tol:
-        if iterations == MAX_ITERATIONS or not np.all(np.isfinite(phi)):
+        if iterations == MAX_ITERATIONS or not (np.all(np.isfinite(phi)) and _finite(cq)):
             worst = np.argsort(-np.abs(phi))[:3]
             unmet = "; ".join(f"{labels[i]} off by {abs(phi[i]):.3g}" for i in worst)
             raise ModelError(
@@ -126,6 +130,14 @@ def assemble(model: Model, system: System, tolerance: float | None = None) -> As
         q += np.linalg.lstsq(cq, -phi, rcond=None)[0]
         phi, cq, phi_t = _evaluate(system, q, qd)
         iterations += 1
+    not_finite = [labels[i] for i in np.flatnonzero(~np.isfinite(phi_t))]
+    if not_finite:
+        raise ModelError(
+            [
+                "assembly: the initial velocities are not finite numbers: the rate of "
+                f"{', '.join(not_finite)} overflows; check the drivers' amplitudes and frequencies"
+            ]
+        )
     rank, _, _ = _rank(cq)
     if rank < cq.shape[0] and model.solver.formulation == "baumgarte":
         raise ModelError([_redundancy_message(cq, labels)])

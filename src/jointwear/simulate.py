@@ -18,6 +18,7 @@ import pandas as pd
 from ._version import __version__
 from .assembly import assemble, redundant_equations
 from .energy import EnergyMonitor
+from .finite import first_non_finite
 from .interrupts import interruptible, stop_requests
 from .kernels import loop
 from .kernels.codes import N_COUNTERS, Counter, Formulation, Method, Status
@@ -219,6 +220,7 @@ def simulate(
         if not loop.start(*args[:3], *args[4:], t0, y0, solver.initial_step):
             status = Status.SINGULAR
     chunk = min(solver.t_end, MIN_CHUNK_STEPS * solver.max_step)
+    detail = ""  # what a non-finite status found, and when
     budget = MIN_CHUNK_STEPS  # steps a chunk may take, so a stalled run still hands back
     with stop_requests() as stop_requested:
         while status == Status.RUNNING:
@@ -228,6 +230,18 @@ def simulate(
             code, rows = loop.advance(*args, buffer, t_before + chunk, steps_before + budget)
             status = Status(code)
             blocks.append(buffer[:rows].copy())
+            broken = first_non_finite(
+                blocks[-1], columns, _accumulated(journals, sliders, element_logs),
+                (t_before, float(integ.scal[S_T])),
+            )  # fmt: skip
+            if broken is not None and status in (Status.RUNNING, Status.SUCCESS):
+                quantity, when, keep = broken
+                blocks[-1] = blocks[-1][:keep]  # the rows before it are kept
+                status = Status.NON_FINITE
+                detail = (
+                    f"{quantity} became non-finite (NaN or inf) {when}; check the model's "
+                    "coefficients (wear, stiffness, forces) against their units"
+                )
             if energy.update(blocks[-1]) and status in (Status.RUNNING, Status.SUCCESS):
                 status = Status.ENERGY_DRIFT
             for i in range(log.counters[Counter.EVENTS]):
@@ -289,7 +303,7 @@ def simulate(
         "jointwear_version": __version__,
         "model": model.name,
         "status": status.name.lower(),
-        "message": status_message(status),
+        "message": detail or status_message(status),
         "settings": model.solver.model_dump(mode="json"),
         "stats": stats,
         "constraints": {
@@ -317,6 +331,18 @@ def simulate(
         final=final,
         **tables,
     )
+
+
+def _accumulated(
+    journals: journal.JournalState, sliders: slider.SliderState, logs: ElementLog
+) -> dict[str, np.ndarray]:
+    """What the elements accumulate besides the rows, by name (for ``first_non_finite``)."""
+    return {
+        "the journal joints' wear": journals.wear,
+        "the slider joints' wear": sliders.wear,
+        "the journal joints' contact totals": logs.journal.totals,
+        "the slider joints' contact totals": logs.slider.totals,
+    }
 
 
 def _check_initial(

@@ -10,7 +10,7 @@ import typer
 from rich.markup import escape
 from rich.table import Table
 
-from .common import PLAIN, ModelPath, Overrides, err, fail, out
+from .common import PLAIN, ModelPath, Overrides, err, fail, one_line, out
 from .progress import CompileNotice, ProgressBar
 
 if TYPE_CHECKING:
@@ -277,6 +277,9 @@ def _filled(table: Table, rows: list[tuple]) -> Table:
     return table
 
 
+OTHER_FOLDERS = {"life.csv": "life-run", "sweep.csv": "sweep"}  # what marks them
+
+
 def plot(
     folder: Annotated[Path, typer.Argument(help="Results folder.")],
     animation: Annotated[
@@ -284,14 +287,30 @@ def plot(
     ] = True,
 ) -> None:
     """Draw (again) the figures of a results folder into FOLDER/figures."""
+    kind = next((kind for name, kind in OTHER_FOLDERS.items() if (folder / name).is_file()), None)
+    if kind is not None:
+        err.print(f"{folder}: a {kind} folder; plot redraws the figures of run folders", **PLAIN)
+        raise typer.Exit(code=2)
     if not (folder / "summary.json").is_file():
-        err.print(f"{folder}: not a results folder (no summary.json)", markup=False, soft_wrap=True)
+        err.print(f"{folder}: not a results folder (no summary.json)", **PLAIN)
         raise typer.Exit(code=2)
     from ..figures.folder import save_figures  # matplotlib only for this command
+    from ..model import ModelError
     from ..results import IDEAL_FOLDER, load_results
 
     companion = folder / IDEAL_FOLDER
-    ideal = load_results(companion) if (companion / "summary.json").is_file() else None
-    figures = save_figures(load_results(folder), folder / "figures", ideal, animation=animation)
+    try:
+        results = load_results(folder)
+        ideal = load_results(companion) if (companion / "summary.json").is_file() else None
+    except (ModelError, OSError, ValueError, LookupError, TypeError) as error:
+        reason = one_line(" ".join(str(error).split()))[:300]
+        err.print(f"{folder}: cannot read its results ({type(error).__name__}: {reason}); "
+                  "the folder is damaged or incomplete: run the model again", **PLAIN)  # fmt: skip
+        raise typer.Exit(code=2) from None
+    try:
+        figures = save_figures(results, folder / "figures", ideal, animation=animation)
+    except OSError as error:
+        err.print(f"{folder}: cannot write its figures: {one_line(str(error))}", **PLAIN)
+        raise typer.Exit(code=3) from None
     for path in figures:
         out.print(str(path), soft_wrap=True)

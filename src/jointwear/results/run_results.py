@@ -19,6 +19,7 @@ import pandas as pd
 import pyarrow as pa
 from pyarrow import csv
 
+from ..finite import json_safe
 from ..io import make_folder, remove, write_atomic, write_text
 from ..model import Model, parse_model
 from .run_state import RunState
@@ -72,7 +73,8 @@ class Results:
                 _write_csv(getattr(self, name), path / f"{name}.csv")
             else:  # an earlier run's, with clearance joints
                 remove(path / f"{name}.csv")
-        write_text(path / "summary.json", json.dumps(self.summary, indent=2))  # last: complete
+        summary = json.dumps(json_safe(self.summary), indent=2, allow_nan=False)
+        write_text(path / "summary.json", summary)  # last: the folder is complete
         return path
 
 
