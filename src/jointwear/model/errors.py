@@ -57,6 +57,14 @@ def _follows_from_items(item: dict) -> bool:
     )
 
 
+_BOUNDS = {  # pydantic's bound errors: the sign, and the key of the bound in the context
+    "greater_than": (">", "gt"),
+    "greater_than_equal": (">=", "ge"),
+    "less_than": ("<", "lt"),
+    "less_than_equal": ("<=", "le"),
+}
+
+
 def _line(item: dict, data: object) -> str:
     path = toml_path(data, item["loc"])
     kind, ctx = item["type"], item.get("ctx", {})
@@ -77,9 +85,9 @@ def _line(item: dict, data: object) -> str:
     elif kind in ("too_short", "too_long"):
         limit = "at least {min_length}" if kind == "too_short" else "at most {max_length}"
         message = f"has {len(item['input'])} items; expected {limit.format(**ctx)}"
-    elif kind in ("greater_than", "greater_than_equal"):
-        bound = f"> {ctx['gt']}" if kind == "greater_than" else f">= {ctx['ge']}"
-        message = f"got {given}; must be {bound}"
+    elif kind in _BOUNDS:
+        sign, key = _BOUNDS[kind]
+        message = f"got {given}; must be {sign} {ctx[key]:g}"
     elif kind == "literal_error":
         message = f"got {given}; expected {ctx['expected']}"
     else:
