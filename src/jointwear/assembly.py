@@ -52,14 +52,16 @@ def row_labels(model: Model) -> list[str]:
     return labels
 
 
-def _evaluate(system: System, q: NDArray, qd: NDArray) -> tuple[NDArray, NDArray, NDArray]:
-    """Phi, the dense Jacobian Phi_q and Phi_t at (q, q'), t = 0."""
+def evaluate(
+    system: System, q: NDArray, qd: NDArray, t: float = 0.0
+) -> tuple[NDArray, NDArray, NDArray]:
+    """Phi, the dense Jacobian Phi_q and Phi_t at (q, q') and time t [s]."""
     mech = system.mechanism
     m = constraint_count(mech)
     phi, gamma, phi_t = np.zeros(m), np.zeros(m), np.zeros(m)
     entries = np.zeros((m, ENTRIES))
     # as a struct, the one specialization the step loop compiles too (kernels/structs.py)
-    evaluate_constraints(0.0, q, qd, to_struct(mech), phi, entries, gamma, phi_t)
+    evaluate_constraints(t, q, qd, to_struct(mech), phi, entries, gamma, phi_t)
     cq = np.zeros((m, q.shape[0]))
     rows, slots = np.nonzero(mech.row_coord >= 0)
     cq[rows, mech.row_coord[rows, slots]] = entries[rows, slots]
@@ -93,7 +95,7 @@ def _redundancy_message(cq: NDArray, labels: list[str]) -> str:
 def redundant_equations(system: System, y0: NDArray[np.float64]) -> int:
     """Constraint equations of ``system`` that depend on others at the state y0."""
     n = y0.shape[0] // 2
-    _, cq, _ = _evaluate(system, y0[:n], y0[n:])
+    _, cq, _ = evaluate(system, y0[:n], y0[n:])
     return cq.shape[0] - _rank(cq)[0]
 
 
@@ -115,7 +117,7 @@ def assemble(model: Model, system: System, tolerance: float | None = None) -> As
     y = initial_guess(model)
     n = y.shape[0] // 2
     q, qd = y[:n].copy(), y[n:].copy()
-    phi, cq, phi_t = _evaluate(system, q, qd)
+    phi, cq, phi_t = evaluate(system, q, qd)
     iterations = 0
     while np.max(np.abs(phi), initial=0.0) > tol:
         if iterations == MAX_ITERATIONS or not (np.all(np.isfinite(phi)) and _finite(cq)):
@@ -128,7 +130,7 @@ def assemble(model: Model, system: System, tolerance: float | None = None) -> As
                 ]
             )
         q += np.linalg.lstsq(cq, -phi, rcond=None)[0]
-        phi, cq, phi_t = _evaluate(system, q, qd)
+        phi, cq, phi_t = evaluate(system, q, qd)
         iterations += 1
     not_finite = [labels[i] for i in np.flatnonzero(~np.isfinite(phi_t))]
     if not_finite:

@@ -27,6 +27,7 @@ from .kernels.elements import ElementLog, Elements, ElementScratch, ElementState
 from .kernels.integrate.abm import make_abm_state
 from .kernels.integrate.rk import DOPRI5, S_T, make_rk_state
 from .kernels.structs import StructProxy, to_struct
+from .lockup import find_lock_up, lock_up_span
 from .model import Model, ModelError
 from .model.sections import FORMULATIONS
 from .results import Results
@@ -49,6 +50,10 @@ from .system import (
 )
 
 CHUNK_WALL_S = 0.2  # target wall time of one compiled chunk [s]
+# A run that reaches its lock-up time, or fails past this share of it, ends ``lock_up``.
+LOCK_NEAR = 0.9
+LOCK_FAILURES = (Status.SUCCESS, Status.SINGULAR, Status.NON_FINITE, Status.CONSTRAINT_DRIFT,
+                 Status.MAX_STEPS)  # fmt: skip
 MIN_CHUNK_STEPS = 100  # the first chunk: this many maximum steps, and at least this many steps
 EVENT_CAPACITY = 4096  # crossings (and contact onsets) one chunk may log before it hands back
 SNAPSHOTS_BY_DEFAULT = 5  # wear snapshots over the run unless wear_snapshot_interval is set
@@ -160,7 +165,8 @@ def simulate(
     with interruptible():
         solver = model.solver
         system = build_system(model)
-        assembly = assemble(model, build_system(model, ideal=True))  # journals centred
+        ideal = build_system(model, ideal=True)
+        assembly = assemble(model, ideal)  # journals centred
         # of the system that runs, without the clearance joints' rows
         redundant = redundant_equations(system, assembly.y0) if assembly.redundant else 0
         if redundant:  # rows report the least-norm multipliers (kernels.formulations)
@@ -171,6 +177,10 @@ def simulate(
         n_state = assembly.y0.shape[0]
         t0 = 0.0 if initial is None else initial.time
         t_end = t0 + solver.t_end
+        lock = None  # a driven mechanism's lock-up: the run stops there with its status
+        if initial is None:
+            lock = find_lock_up(model, ideal, assembly, lock_up_span(model))
+            t_end = t_end if lock is None else min(t_end, lock.time)
         output_times = _output_times(t0, solver.t_end, solver.output_interval)
         ctl = loop.Control(
             rtol=solver.rtol,
@@ -266,6 +276,9 @@ def simulate(
                 if t_now > t_before:
                     rate = (t_now - t_before) / elapsed
                     chunk = min(max(rate * CHUNK_WALL_S, 1e-9 * solver.t_end), 10 * chunk)
+    near_lock = lock is not None and float(integ.scal[S_T]) - t0 >= LOCK_NEAR * lock.time
+    if near_lock and status in LOCK_FAILURES:  # how the dynamics meet the lock-up
+        status, detail = Status.LOCK_UP, lock.message()
     wall = time.perf_counter() - wall_start
     t_reached = float(integ.scal[S_T])
     final = RunState(

@@ -3,7 +3,7 @@
 These are the ``status`` values of ``summary.json``, ``case.json``, ``sweep.csv`` and a life
 run's ``summary.json``. A run's status is the name of the kernels' ``Status`` code in lowercase
 (``status_name``: ``success``, ``non_finite``, ``singular``, ``max_steps``, ``interrupted``,
-``constraint_drift``, ``energy_drift``);
+``constraint_drift``, ``energy_drift``, ``lock_up``);
 a sweep case adds ``error`` and ``not_run``, a life run ``failed``, ``worn_through`` and
 ``clearance_limit``. Everything but ``success`` means the work did not get to its end.
 """
@@ -56,6 +56,8 @@ _MESSAGES = {
     "solver.max_constraint_violation (the motion may have left its assembly branch, as at a "
     "dead-centre or flat position, or the drivers contradict the joints); with formulation "
     "'baumgarte' try 'augmented_lagrangian', or tighter tolerances",
+    Status.LOCK_UP: "the mechanism locks up: the drivers move it where no pose meets its "
+    "joints; check the link lengths and the drivers' ranges",
     Status.ENERGY_DRIFT: "the energy of this conservative mechanism changed by more than "
     "solver.max_energy_error of its scale (summary.json, 'energy'): the motion has probably "
     "left its assembly branch at a singular position; with formulation 'baumgarte' try "

@@ -149,19 +149,26 @@ PENETRATION_SHARES = (0.01, 0.1, 0.4)  # of the clearance, where check shows the
 def check(model: ModelPath, overrides: Overrides = None) -> None:
     """Validate MODEL, assemble it and print its degrees of freedom, initial pose and joints.
 
-    The pose is assembled with every journal centred in its bearing; for each clearance
-    joint the radial clearance, the contact stiffness K and the Hertz parameters follow.
+    A driven mechanism is also moved through one driver cycle (or to the end time), and
+    refused if it locks up. The pose is assembled with every journal centred in its bearing;
+    for each clearance joint the radial clearance, the contact stiffness K and the Hertz
+    parameters follow.
     """
     from ..assembly import assemble  # the model schema and one compiled kernel, no pandas
+    from ..lockup import find_lock_up, lock_up_span
     from ..model import ModelError, load_model
     from ..system import build_system, freed_degrees_of_freedom, sliders_outside_guides
 
     try:
         parsed = load_model(model, overrides or [])
-        assembly = assemble(parsed, build_system(parsed, ideal=True))
+        ideal = build_system(parsed, ideal=True)
+        assembly = assemble(parsed, ideal)
         outside = sliders_outside_guides(parsed, assembly.y0)
         if outside:
             raise ModelError(outside)
+        lock = find_lock_up(parsed, ideal, assembly, lock_up_span(parsed))
+        if lock is not None:
+            raise ModelError([f"drivers: {lock.message()}"])
     except ModelError as error:
         raise fail(error) from None
     out.print(f"model '{parsed.name}': valid")

@@ -55,6 +55,7 @@ class Status(IntEnum):
     INTERRUPTED = 6
     CONSTRAINT_DRIFT = 7  # the constraints drifted past solver.max_constraint_violation
     ENERGY_DRIFT = 8  # a conservative mechanism's energy changed past solver.max_energy_error
+    LOCK_UP = 9  # the drivers move the mechanism where no pose meets its joints (lockup.py)
 
 
 class Formulation(IntEnum):

@@ -4,6 +4,7 @@ Drivers prescribe an angle or a distance with one of them; a force component or 
 is a constant quantity or a polynomial or harmonic table of it.
 """
 
+import math
 from typing import Annotated, ClassVar, Generic, Literal, TypeVar
 
 from pydantic import BaseModel, Discriminator, Field, Tag
@@ -68,3 +69,18 @@ AngleFunction = Annotated[
 DistanceFunction = Annotated[
     ConstantSpeed[Speed, Length] | Polynomial | Harmonic[Length], Field(discriminator="type")
 ]
+
+
+def period(function: object, kind: str) -> float | None:
+    """Period [s] of a time function; 0 for a constant, None if it never repeats."""
+    if isinstance(function, ConstantSpeed):
+        if function.speed == 0.0:
+            return 0.0
+        return 2.0 * math.pi / abs(function.speed) if kind == "angle" else None
+    if isinstance(function, Polynomial):
+        return 0.0 if not any(function.coefficients[1:]) else None
+    if isinstance(function, Harmonic):
+        if function.angular_frequency == 0.0 or function.amplitude == 0.0:
+            return 0.0
+        return 2.0 * math.pi / abs(function.angular_frequency)
+    return 0.0  # a constant value

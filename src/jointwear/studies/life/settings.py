@@ -13,7 +13,7 @@ import math
 from dataclasses import dataclass
 
 from ...model import Model, ModelError
-from ...model.functions import ConstantSpeed, Harmonic, Polynomial
+from ...model.functions import period
 from ...units import to_si
 
 PERIOD_RTOL = 1e-9  # periods whose ratio is this close to a whole number divide each other
@@ -108,15 +108,15 @@ def cycle_driver(model: Model) -> tuple[str, float]:
         values = load.force if load.type == "point_force" else (getattr(load, "torque", 0.0),)
         functions += [(f"forces[{i}]", value, "load", None) for value in values]
     for label, function, kind, driver in functions:
-        period = _period(function, kind)
-        if period is None:
+        repeat = period(function, kind)
+        if repeat is None:
             problems.append(
                 f"{label}: a {function.type} function of time never repeats; a life run needs "
                 "periodic drivers and loads: angle drivers at constant_speed, harmonic "
                 "functions or constants"
             )
-        elif period > 0.0:
-            periods[label] = period
+        elif repeat > 0.0:
+            periods[label] = repeat
             drivers += [driver] if driver else []
     if not problems and not drivers:
         problems.append(
@@ -126,31 +126,16 @@ def cycle_driver(model: Model) -> tuple[str, float]:
     if problems:
         raise ModelError(problems)
     cycle = max(periods.values())
-    for label, period in periods.items():
-        ratio = cycle / period
+    for label, own in periods.items():
+        ratio = cycle / own
         if abs(ratio - round(ratio)) > PERIOD_RTOL * ratio:
             problems.append(
-                f"{label}: its period {period:.6g} s does not divide the cycle {cycle:.6g} s "
+                f"{label}: its period {own:.6g} s does not divide the cycle {cycle:.6g} s "
                 "of the longest period; a life run needs one cycle for the whole model"
             )
     if problems:
         raise ModelError(problems)
     return drivers[0], cycle
-
-
-def _period(function: object, kind: str) -> float | None:
-    """Period [s] of a time function; 0 for a constant, None if it never repeats."""
-    if isinstance(function, ConstantSpeed):
-        if function.speed == 0.0:
-            return 0.0
-        return 2.0 * math.pi / abs(function.speed) if kind == "angle" else None
-    if isinstance(function, Polynomial):
-        return 0.0 if not any(function.coefficients[1:]) else None
-    if isinstance(function, Harmonic):
-        if function.angular_frequency == 0.0 or function.amplitude == 0.0:
-            return 0.0
-        return 2.0 * math.pi / abs(function.angular_frequency)
-    return 0.0  # a constant value
 
 
 def with_feedback(model: Model, feedback: bool | None) -> Model:
