@@ -227,7 +227,7 @@ def _delete(path: str):
             _set("bodies/0/mass", "3 m"),
             "bodies[0].mass: '3 m' has units of length; expected a mass, e.g. '3.12 kg'",
         ),
-        (_set("bodies/0/mass", "-1 kg"), "bodies[0].mass: got '-1 kg'; must be > 0"),
+        (_set("bodies/0/mass", "-1 kg"), "bodies[0].mass: got '-1 kg'; must be >= 1e-20"),
         (_delete("bodies/0/inertia"), "bodies[0].inertia: missing required key"),
         (
             _set("bodies/0/mas", 3),

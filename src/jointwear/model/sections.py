@@ -54,8 +54,9 @@ class Body(Table):
     """A moving rigid body; `position`, `angle` and velocities are initial guesses."""
 
     name: Name
-    mass: Annotated[Mass, Gt(0)]
-    inertia: Annotated[Inertia, Gt(0)]
+    # Bounds far outside any machine part, inside what 1/m and m v^2 keep finite.
+    mass: Annotated[Mass, Ge(1e-20), Le(1e20)]
+    inertia: Annotated[Inertia, Ge(1e-30), Le(1e30)]
     position: Vector2
     angle: Angle
     velocity: Velocity2 = (0.0, 0.0)
