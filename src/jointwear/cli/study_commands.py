@@ -7,7 +7,7 @@ from typing import Annotated
 
 import typer
 
-from .common import PLAIN, ModelPath, Overrides, err, fail, out
+from .common import PLAIN, ModelPath, Overrides, err, fail, one_line, out
 from .progress import CompileNotice, ProgressBar, SweepProgress
 
 
@@ -68,6 +68,13 @@ def sweep(
         )
     except ModelError as error:
         raise fail(error) from None
+    except OSError as error:
+        err.print(
+            f"could not write in {out_dir}: {one_line(str(error))}; the finished cases are "
+            "kept in its cases folder, and running the sweep again skips them",
+            **PLAIN,
+        )
+        raise typer.Exit(code=3) from None
     finally:
         bar.close()
     table = results.table
@@ -175,6 +182,13 @@ def life(
             )
     except ModelError as error:
         raise fail(error) from None
+    except OSError as error:
+        err.print(
+            f"could not write in {out_dir}: {one_line(str(error))}; its last complete "
+            "checkpoint is kept: go on with --resume once the folder can be written",
+            **PLAIN,
+        )
+        raise typer.Exit(code=3) from None
     finally:
         compiling.bar.close()
         bar.close()
