@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import math
 import re
+import reprlib
 from functools import cache
 from typing import TYPE_CHECKING, Annotated, NamedTuple
 
@@ -69,6 +70,14 @@ _KINDS: dict[str, _Kind] = {
     "1/[pressure]": _Kind("wear coefficient", "8e-14 1/Pa"),
 }
 
+_SHORT = reprlib.Repr()  # values in messages: nesting, lists and long texts cut short
+_SHORT.maxlevel, _SHORT.maxlist, _SHORT.maxstring, _SHORT.maxother, _SHORT.maxlong = (
+    3,
+    4,
+    60,
+    60,
+    20,
+)
 _NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
 _UNIT = r"[^\W\d]\w*(?:\s*(?:\^|\*\*)\s*-?[1-9]\d?)?"  # powers 1 to 99, not 0
 _QUANTITY = re.compile(rf"\s*({_NUMBER})\s*((?:1\s*/\s*)?{_UNIT}(?:\s*[*/ ]\s*{_UNIT})*)?\s*")
@@ -122,23 +131,23 @@ def to_si(value: object, dimension: str, field_name: str | None = None) -> float
 
 
 def _to_si(value: object, dimension: str, expected: str) -> float:
+    shown = _SHORT.repr(value)
     if isinstance(value, bool) or not isinstance(value, int | float | str):
-        raise ValueError(f"{value!r} is not a number; {expected} (plain numbers are SI)")
+        raise ValueError(f"{shown} is not a number; {expected} (plain numbers are SI)")
     if not isinstance(value, str):
         try:
             number = float(value)  # an int of hundreds of digits overflows here
         except OverflowError:
             number = math.inf
         if not math.isfinite(number):
-            shown = repr(value) if len(repr(value)) <= 20 else repr(value)[:20] + "..."
             raise ValueError(f"{shown} is not a finite number; {expected}")
         return number
     match = _QUANTITY.fullmatch(value)
     if match is None:
-        raise ValueError(f"cannot read {value!r} as a number and a unit; {expected}")
+        raise ValueError(f"cannot read {shown} as a number and a unit; {expected}")
     number, units = match.groups()
     if units is None:
-        raise ValueError(f"{value!r} has no unit; {expected} (plain numbers are SI)")
+        raise ValueError(f"{shown} has no unit; {expected} (plain numbers are SI)")
     import pint  # imported by registry() already
 
     ureg = registry()
@@ -148,22 +157,22 @@ def _to_si(value: object, dimension: str, expected: str) -> float:
         pure = [name for name, _ in quantity.unit_items() if _is_pure_number(name)]
     except (pint.PintError, ArithmeticError, LookupError, ValueError) as error:
         reason = " ".join(str(error).split()).rstrip(".") or type(error).__name__
-        raise ValueError(f"cannot read {value!r}: {reason}; {expected}") from None
+        raise ValueError(f"cannot read {shown}: {reason}; {expected}") from None
     if pure:
-        raise ValueError(f"{value!r}: '{pure[0]}' is a pure number, not a unit; {expected}")
+        raise ValueError(f"{shown}: '{pure[0]}' is a pure number, not a unit; {expected}")
     if dimension == "[]" and not any(True for _ in quantity.unit_items()):
-        raise ValueError(f"{value!r} has no angle unit; {expected} (plain numbers are SI)")
+        raise ValueError(f"{shown} has no angle unit; {expected} (plain numbers are SI)")
     if dimensionality != ureg.get_dimensionality(dimension):
         actual = _describe(dimensionality)
-        raise ValueError(f"{value!r} has units of {actual}; {expected}")
+        raise ValueError(f"{shown} has units of {actual}; {expected}")
     if dimension == "1/[time]" and any(name.endswith("hertz") for name, _ in quantity.unit_items()):
         raise ValueError(
-            f"{value!r} is ambiguous for an angular speed (cycles or radians per second?); "
+            f"{shown} is ambiguous for an angular speed (cycles or radians per second?); "
             "use rad/s or rpm, e.g. '1500 rpm'"
         )
     result = float(quantity.to_base_units().magnitude)
     if not math.isfinite(result):
-        raise ValueError(f"{value!r} is not finite in SI units; {expected}")
+        raise ValueError(f"{shown} is not finite in SI units; {expected}")
     return result
 
 

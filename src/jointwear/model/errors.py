@@ -12,6 +12,8 @@ from collections.abc import Iterable, Sequence
 
 from pydantic import ValidationError
 
+TOO_DEEP = "nested too deeply to read (arrays or tables within each other); flatten it"
+
 # Tag of the plain-quantity member in the "quantity or function table" unions of the schema.
 SCALAR_TAG = "quantity"
 

@@ -10,7 +10,7 @@ import re
 import tomllib
 from pathlib import Path
 
-from .errors import ModelError
+from .errors import TOO_DEEP, ModelError
 from .overrides import apply_changes
 
 EXTENDING_KEYS = ("extends", "set", "name", "description")
@@ -83,6 +83,8 @@ def _read_toml(path: Path) -> dict:
         raise ModelError([f"{path}: cannot read the file; {error.strerror}"]) from None
     except UnicodeDecodeError:
         raise ModelError([f"{path}: not UTF-8 text; a model file is TOML"]) from None
+    except RecursionError:
+        raise ModelError([f"{path}: {TOO_DEEP}"]) from None
     except tomllib.TOMLDecodeError as error:
         where = re.fullmatch(r"(.*) \(at line (\d+), column (\d+)\)", str(error))
         place, what = (f"{path}:{where[2]}:{where[3]}", where[1]) if where else (path, error)

@@ -4,7 +4,7 @@ import copy
 import tomllib
 from collections.abc import Iterable
 
-from .errors import ModelError, did_you_mean
+from .errors import TOO_DEEP, ModelError, did_you_mean
 
 
 def apply_overrides(data: dict, overrides: Iterable[str]) -> dict:
@@ -23,7 +23,7 @@ def apply_overrides(data: dict, overrides: Iterable[str]) -> dict:
         dotted, equals, text = override.partition("=")
         if not equals or not all(dotted.strip().split(".")):
             raise ModelError([f"--set {override}: expected path=value, e.g. solver.t_end=0.5"])
-        changes.append((dotted.strip(), _toml_value(text)))
+        changes.append((dotted.strip(), toml_value(text)))
     return apply_changes(data, changes)
 
 
@@ -65,8 +65,11 @@ def _index(container: object, key: str, where: str) -> int:
     raise ModelError([f"{where}: no item {key!r}; {allowed}{indices}{did_you_mean(key, listing)}"])
 
 
-def _toml_value(text: str) -> object:
+def toml_value(text: str) -> object:
+    """The value a ``--set`` or ``--vary`` text stands for: a TOML value, or else the text."""
     try:
         return tomllib.loads(f"v = {text}")["v"]
     except tomllib.TOMLDecodeError:
         return text.strip()
+    except RecursionError:
+        raise ModelError([f"{text[:40]}...: {TOO_DEEP}"]) from None

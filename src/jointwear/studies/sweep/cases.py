@@ -21,7 +21,8 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ...model import Model
-from ...model.errors import ModelError, did_you_mean
+from ...model.errors import TOO_DEEP, ModelError, did_you_mean
+from ...model.overrides import toml_value
 
 VARY_EXAMPLE = "joints.coupler_follower.clearance.friction_coefficient=0.05,0.1"
 SWEEP_FILE_KEYS = ("vary", "set")
@@ -121,7 +122,7 @@ def check_vary(vary: Mapping[str, Sequence[str]]) -> None:
             continue
         seen: dict[str, str] = {}
         for text in texts:
-            key = json.dumps(value_of(text), sort_keys=True)
+            key = json.dumps(toml_value(text), sort_keys=True)
             if key in seen:
                 problems.append(
                     f"--vary {path}: value {text} repeats {seen[key]}; give each value once"
@@ -129,14 +130,6 @@ def check_vary(vary: Mapping[str, Sequence[str]]) -> None:
             seen.setdefault(key, text)
     if problems:
         raise ModelError(problems)
-
-
-def value_of(text: str) -> object:
-    """The value a ``--set`` text stands for: a TOML value, or else the text itself."""
-    try:
-        return tomllib.loads(f"v = {text}")["v"]
-    except tomllib.TOMLDecodeError:
-        return text.strip()
 
 
 def value_text(value: object) -> str:
@@ -178,6 +171,8 @@ def read_sweep_file(path: str | os.PathLike) -> Plan:
         raise ModelError([f"{path}: cannot read the sweep file; {error.strerror}"]) from None
     except (UnicodeDecodeError, tomllib.TOMLDecodeError) as error:
         raise ModelError([f"{path}: not a TOML sweep file; {error}"]) from None
+    except RecursionError:
+        raise ModelError([f"{path}: {TOO_DEEP}"]) from None
     problems = [
         f"{path}: unknown key {key!r}; a sweep file has the tables vary and set"
         f"{did_you_mean(key, SWEEP_FILE_KEYS)}"
@@ -269,7 +264,7 @@ def _short_keys(paths: list[str]) -> dict[str, str]:
 
 
 def _safe(text: str) -> str:
-    value = value_of(text)
+    value = toml_value(text)
     shown = value if isinstance(value, str) else text
     return _UNSAFE.sub("_", shown.strip()).strip("_") or "_"
 
@@ -308,9 +303,9 @@ def si_value(model: Model, path: str, text: str) -> object:
             elif key.isdigit() and int(key) < len(current):
                 current = current[int(key)]
             else:
-                return value_of(text)
+                return toml_value(text)
         else:
-            return value_of(text)
+            return toml_value(text)
     if isinstance(current, bool | int | float | str):
         return current
     return json.dumps(current)
