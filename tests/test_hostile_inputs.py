@@ -190,3 +190,26 @@ def test_a_mutated_run_succeeds_with_finite_results_or_says_why(tmp_path_factory
 
         table = pd.read_parquet(out / "timeseries.parquet")
         assert table.notna().all().all()
+
+
+DEEP = "[" * 3000 + "]" * 3000  # deeper than Python's recursion limit
+
+
+@pytest.mark.parametrize("where", ["model", "set", "vary", "sweep_file"])
+def test_deep_nesting_is_one_line(tmp_path, where):
+    model, args = PENDULUM, []
+    if where == "model":
+        model = tmp_path / "deep.toml"
+        model.write_text(PENDULUM.read_text() + f"\nextra = {DEEP}\n")
+        args = ["check", model]
+    elif where == "set":
+        args = ["check", model, "--set", f"solver.t_end={DEEP}"]
+    elif where == "vary":
+        args = ["sweep", model, "--out", tmp_path / "out", "--vary", f"solver.t_end={DEEP}"]
+    else:
+        plan = tmp_path / "sweep.toml"
+        plan.write_text(f"[vary]\n'solver.t_end' = {DEEP}\n")
+        args = ["sweep", model, "--out", tmp_path / "out", "--file", plan]
+    line = one_line_failure(invoke(*args))
+    assert "nested too deeply" in line
+    assert len(line) < 300
