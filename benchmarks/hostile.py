@@ -853,10 +853,18 @@ def traceback_in_text(text: str) -> dict:
     }
 
 
+def is_file(path: Path) -> bool:
+    """``path.is_file()``, False for a path the system refuses (a name too long)."""
+    try:
+        return path.is_file()
+    except (OSError, ValueError):
+        return False
+
+
 def summary_problems(folder: Path, want_success: bool) -> list[str]:
     """What is wrong with a results folder's summary.json (empty: fine)."""
     path = folder / "summary.json"
-    if not path.is_file():
+    if not is_file(path):
         return ["no_summary"]
     try:
         text = path.read_text()
@@ -886,7 +894,7 @@ def summary_problems(folder: Path, want_success: bool) -> list[str]:
     if want_success:
         for name in ("wear.csv", "timeseries.csv"):
             csv = folder / name
-            if csv.is_file() and csv.stat().st_size < 50_000_000:
+            if is_file(csv) and csv.stat().st_size < 50_000_000:
                 body = csv.read_text(errors="replace").split("\n", 1)[-1]
                 if NONFINITE_WORD.search(body):
                     problems.append(f"nonfinite_in_{name}")
@@ -920,12 +928,12 @@ def analyse(step: dict, exit_code: int, output: str, stderr: str, info: dict | N
     kind, out = step["kind"], step.get("out")
     if info is None and kind in ("run", "life") and out and exit_code in (0, 1):
         kinds += summary_problems(Path(out), want_success=exit_code == 0)
-    sweep_table = kind == "sweep" and out and (Path(out) / "sweep.csv").is_file()
+    sweep_table = kind == "sweep" and out and is_file(Path(out) / "sweep.csv")
     if info is None and kind == "sweep" and out and exit_code in (0, 1) and not sweep_table:
         kinds.append("sweep_without_table")
-    if exit_code == 3:
+    if exit_code == 3 and kind == "run":
         found = re.search(r"the results are in (\S+)", output)
-        if not found or not (Path(found.group(1)) / "summary.json").is_file():
+        if not found or not is_file(Path(found.group(1)) / "summary.json"):
             kinds.append("exit3_results_not_found")
     if kind == "check" and exit_code == 0:
         if NONFINITE_WORD.search(output):
@@ -1388,12 +1396,16 @@ def _midrun_case(label: str, box: Path, out: Path, argv: list[str], cwd: Path, h
         text, _ = proc.communicate()
     _sh("chattr", "-i", str(target))
     after = tree_state(box)
-    record = _compare(label, box, out, argv, before, after, proc.returncode, text)
+    record = _compare(label, box, out, argv, before, after, proc.returncode, text, set())
     rescued = re.search(r"the results are in (\S+)", text)
-    marker = "sweep.csv" if "sweep" in argv[1] else "summary.json"
-    kept = (out.is_dir() and (out / marker).is_file()) or bool(
-        rescued and (Path(rescued.group(1)) / marker).is_file())
-    if proc.returncode == 3 and not (rescued and Path(rescued.group(1)).is_dir()):
+    marker = {"sweep": "sweep.csv", "life": "checkpoint/checkpoint.json"}.get(argv[1],
+                                                                             "summary.json")
+    kept = (out.is_dir() and is_file(out / marker)) or bool(
+        rescued and is_file(Path(rescued.group(1)) / "summary.json"))
+    if argv[1] == "sweep":  # finished cases kept in their folders
+        kept = kept or any((out / "cases").glob("*/summary.json"))
+    if proc.returncode == 3 and argv[1] == "run" and not (rescued and
+                                                          Path(rescued.group(1)).is_dir()):
         record["problems"].append("rescue_folder_missing")
     if proc.returncode != 2 and not kept:
         record["problems"].append("computed_results_lost")

@@ -204,7 +204,8 @@ def test_a_signal_at_a_random_moment_loses_nothing(tmp_path, seed):
     if summary.is_file():  # written whole: the run's status says what happened
         status = json.loads(summary.read_text())["status"]
         assert status in ("success", "interrupted")
-        assert proc.returncode in (0, 1, -signum, 128 + signum), proc.returncode
+        # 130: the signal came after the results were saved (while printing the summary)
+        assert proc.returncode in (0, 1, 130, -signum, 128 + signum), proc.returncode
         if stdout.startswith("success"):
             assert status == "success"
     else:  # stopped before any result: nothing of the run's left in the folder

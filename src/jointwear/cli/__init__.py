@@ -3,7 +3,8 @@
 Exit codes: 0 success, 1 the run ended without reaching its end time (interrupted or a
 solver failure; the results folder holds what was computed), 2 invalid input (one line per
 problem on stderr, no traceback), 3 results that could not be written where asked (the
-message says where they are), 130 interrupted before anything was computed.
+message says where they are), 130 interrupted outside a run (before it started, or after
+its results were saved).
 """
 
 import typer
