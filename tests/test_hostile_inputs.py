@@ -213,3 +213,16 @@ def test_deep_nesting_is_one_line(tmp_path, where):
     line = one_line_failure(invoke(*args))
     assert "nested too deeply" in line
     assert len(line) < 300
+
+
+def test_numbers_of_thousands_of_digits_and_special_files_are_one_line(tmp_path):
+    digits = "1" * 5001  # past Python's limit on converting integers from text
+    line = one_line_failure(invoke("check", PENDULUM, "--set", f"bodies.0.mass={digits}"))
+    assert "too many digits" in line
+    model = tmp_path / "long.toml"
+    model.write_text(PENDULUM.read_text().replace('mass = "1 kg"', f"mass = {digits}"))
+    assert "too many digits" in one_line_failure(invoke("check", model))
+    extending = tmp_path / "extends.toml"
+    extending.write_text('extends = "/dev/zero"\n')
+    assert "not a file" in one_line_failure(invoke("check", extending))
+    assert "not a file" in one_line_failure(invoke("check", tmp_path))

@@ -309,7 +309,7 @@ def plot(
     try:
         results = load_results(folder)
         ideal = load_results(companion) if (companion / "summary.json").is_file() else None
-    except (ModelError, OSError, ValueError, LookupError, TypeError) as error:
+    except (ModelError, OSError, ValueError, LookupError, TypeError, RecursionError) as error:
         reason = one_line(" ".join(str(error).split()))[:300]
         err.print(f"{folder}: cannot read its results ({type(error).__name__}: {reason}); "
                   "the folder is damaged or incomplete: run the model again", **PLAIN)  # fmt: skip

@@ -13,6 +13,7 @@ from collections.abc import Iterable, Sequence
 from pydantic import ValidationError
 
 TOO_DEEP = "nested too deeply to read (arrays or tables within each other); flatten it"
+TOO_LONG = "a number has too many digits to read; write it with an exponent (e.g. 1e30)"
 
 # Tag of the plain-quantity member in the "quantity or function table" unions of the schema.
 SCALAR_TAG = "quantity"

@@ -10,10 +10,11 @@ import re
 import tomllib
 from pathlib import Path
 
-from .errors import TOO_DEEP, ModelError
+from .errors import TOO_DEEP, TOO_LONG, ModelError
 from .overrides import apply_changes
 
 EXTENDING_KEYS = ("extends", "set", "name", "description")
+MAX_FILE_BYTES = 10**7  # a model file larger than this is not one
 
 
 def read_model_data(path: Path) -> dict:
@@ -78,6 +79,12 @@ def _leaves(table: dict, prefix: tuple[str, ...]) -> list[tuple[str, object]]:
 
 def _read_toml(path: Path) -> dict:
     try:
+        if not path.is_file():
+            raise ModelError([f"{path}: not a file; give the path of a TOML model file"])
+        if path.stat().st_size > MAX_FILE_BYTES:
+            raise ModelError(
+                [f"{path}: larger than {MAX_FILE_BYTES // 10**6} MB; a model file is a few kB"]
+            )
         return tomllib.loads(path.read_bytes().decode())
     except OSError as error:
         raise ModelError([f"{path}: cannot read the file; {error.strerror}"]) from None
@@ -85,6 +92,8 @@ def _read_toml(path: Path) -> dict:
         raise ModelError([f"{path}: not UTF-8 text; a model file is TOML"]) from None
     except RecursionError:
         raise ModelError([f"{path}: {TOO_DEEP}"]) from None
+    except ValueError:  # a number of thousands of digits
+        raise ModelError([f"{path}: {TOO_LONG}"]) from None
     except tomllib.TOMLDecodeError as error:
         where = re.fullmatch(r"(.*) \(at line (\d+), column (\d+)\)", str(error))
         place, what = (f"{path}:{where[2]}:{where[3]}", where[1]) if where else (path, error)

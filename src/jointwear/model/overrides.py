@@ -4,7 +4,7 @@ import copy
 import tomllib
 from collections.abc import Iterable
 
-from .errors import TOO_DEEP, ModelError, did_you_mean
+from .errors import TOO_DEEP, TOO_LONG, ModelError, did_you_mean
 
 
 def apply_overrides(data: dict, overrides: Iterable[str]) -> dict:
@@ -73,3 +73,5 @@ def toml_value(text: str) -> object:
         return text.strip()
     except RecursionError:
         raise ModelError([f"{text[:40]}...: {TOO_DEEP}"]) from None
+    except ValueError:  # a number of thousands of digits
+        raise ModelError([f"{text[:40]}...: {TOO_LONG}"]) from None

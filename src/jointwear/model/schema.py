@@ -11,7 +11,7 @@ from typing import Annotated
 
 from pydantic import Field, ValidationError, model_validator
 
-from .errors import ModelError, from_validation_error
+from .errors import TOO_DEEP, ModelError, from_validation_error
 from .files import read_model_data
 from .overrides import apply_overrides
 from .references import reference_problems
@@ -141,5 +141,8 @@ def load_model(path: str | PathLike, overrides: Sequence[str] = ()) -> Model:
         If the file cannot be read, is not valid TOML, or describes an invalid model.
     """
     path = Path(path)
-    data = read_model_data(path)
-    return parse_model(apply_overrides(data, overrides), name=path.stem)
+    try:
+        data = read_model_data(path)
+        return parse_model(apply_overrides(data, overrides), name=path.stem)
+    except RecursionError:  # deep tables from dotted keys, in copying or validating them
+        raise ModelError([f"{path}: {TOO_DEEP}"]) from None
