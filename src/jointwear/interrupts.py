@@ -46,21 +46,32 @@ def stop_requests() -> Iterator[list[bool]]:
 def interruptible() -> Iterator[None]:
     """Within the block, SIGINT and SIGTERM raise ``KeyboardInterrupt`` at once.
 
-    Even inside an open ``stop_requests`` block: for work that loses nothing when cut short
-    (a run's set-up and compiling). A request already made raises on entry.
+    Even inside an open ``stop_requests`` block, whose flag they also set (the loops around
+    it stop too): for work that loses nothing when cut short (a run's set-up and compiling).
+    A request already made raises on entry. An error the interrupt caused inside a library
+    (numba loading its cache) comes out as the ``KeyboardInterrupt`` it was.
     """
-    if _open is not None and _open[0] == os.getpid() and _open[1][0]:
+    outer = _open[1] if _open is not None and _open[0] == os.getpid() else None
+    if outer is not None and outer[0]:
         raise KeyboardInterrupt
     if threading.current_thread() is not threading.main_thread():
         yield
         return
+    hit = [False]
 
     def interrupt(signum: int, frame: object) -> None:
+        hit[0] = True
+        if outer is not None:
+            outer[0] = True
         raise KeyboardInterrupt
 
     previous = {s: signal.signal(s, interrupt) for s in (signal.SIGINT, signal.SIGTERM)}
     try:
         yield
+    except Exception as error:
+        if hit[0]:
+            raise KeyboardInterrupt from error
+        raise
     finally:
         for s, handler in previous.items():
             signal.signal(s, handler)

@@ -177,7 +177,11 @@ class LifeRun:
         if self.stop_requested[0]:
             self.stop(INTERRUPTED, f"interrupted before {span}{RESUME}")
             return None
-        outcome = simulate(self._cycles_model(count), initial=begin)
+        try:
+            outcome = simulate(self._cycles_model(count), initial=begin)
+        except KeyboardInterrupt:  # during its set-up: nothing of this span computed
+            self.stop(INTERRUPTED, f"interrupted before {span}{RESUME}")
+            return None
         if outcome.status == INTERRUPTED:
             self.stop(INTERRUPTED, f"interrupted during {span}{RESUME}")
             return None

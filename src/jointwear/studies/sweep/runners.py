@@ -86,6 +86,8 @@ def run_case(task: CaseTask) -> Outcome:
         error = "" if status == SUCCESS else summary.get("message", status)
     except ModelError as problem:
         summary, status, error = {}, ERROR, "; ".join(problem.problems)
+    except KeyboardInterrupt:  # during the case's set-up: nothing of it computed yet
+        summary, status, error = {}, INTERRUPTED, "interrupted before the case's first step"
     except Exception as problem:  # a case's failure must not stop the sweep
         summary, status, error = {}, ERROR, f"{type(problem).__name__}: {problem}"
     outcome = {
