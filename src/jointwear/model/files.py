@@ -79,7 +79,7 @@ def _leaves(table: dict, prefix: tuple[str, ...]) -> list[tuple[str, object]]:
 
 def _read_toml(path: Path) -> dict:
     try:
-        if not path.is_file():
+        if path.exists() and not path.is_file():
             raise ModelError([f"{path}: not a file; give the path of a TOML model file"])
         if path.stat().st_size > MAX_FILE_BYTES:
             raise ModelError(
@@ -92,9 +92,9 @@ def _read_toml(path: Path) -> dict:
         raise ModelError([f"{path}: not UTF-8 text; a model file is TOML"]) from None
     except RecursionError:
         raise ModelError([f"{path}: {TOO_DEEP}"]) from None
-    except ValueError:  # a number of thousands of digits
-        raise ModelError([f"{path}: {TOO_LONG}"]) from None
     except tomllib.TOMLDecodeError as error:
         where = re.fullmatch(r"(.*) \(at line (\d+), column (\d+)\)", str(error))
         place, what = (f"{path}:{where[2]}:{where[3]}", where[1]) if where else (path, error)
         raise ModelError([f"{place}: invalid TOML: {what}; fix the syntax there"]) from None
+    except ValueError:  # a number of thousands of digits
+        raise ModelError([f"{path}: {TOO_LONG}"]) from None

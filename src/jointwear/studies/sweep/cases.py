@@ -21,7 +21,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ...model import Model
-from ...model.errors import TOO_DEEP, ModelError, did_you_mean
+from ...model.errors import TOO_DEEP, TOO_LONG, ModelError, did_you_mean
 from ...model.overrides import toml_value
 
 VARY_EXAMPLE = "joints.coupler_follower.clearance.friction_coefficient=0.05,0.1"
@@ -173,6 +173,8 @@ def read_sweep_file(path: str | os.PathLike) -> Plan:
         raise ModelError([f"{path}: not a TOML sweep file; {error}"]) from None
     except RecursionError:
         raise ModelError([f"{path}: {TOO_DEEP}"]) from None
+    except ValueError:  # a number of thousands of digits
+        raise ModelError([f"{path}: {TOO_LONG}"]) from None
     problems = [
         f"{path}: unknown key {key!r}; a sweep file has the tables vary and set"
         f"{did_you_mean(key, SWEEP_FILE_KEYS)}"
