@@ -140,11 +140,20 @@ def test_results_that_cannot_be_written_are_saved_elsewhere(tmp_path):
         shutil.rmtree(rescue)
 
 
-def test_an_output_folder_that_cannot_be_written_is_refused_before_the_run(tmp_path):
+@pytest.mark.parametrize(
+    "args",
+    [
+        ("run", PENDULUM, *SHORT),
+        ("life", FOURBAR, "--cycles", 1, "--no-figures"),
+        ("sweep", PENDULUM, "--vary", "solver.t_end=0.01,0.02", "--no-figures"),
+    ],
+    ids=["run", "life", "sweep"],
+)
+def test_an_output_folder_that_cannot_be_written_is_refused_before_the_run(tmp_path, args):
     blocker = tmp_path / "file"
     blocker.write_text("a file")
     for out in (blocker / "out", tmp_path / ("x" * 300)):
-        result = invoke("run", PENDULUM, "--out", out, *SHORT)
+        result = invoke(*args, "--out", out)
         assert result.exit_code == 2, result.output
         assert result.output.startswith("out: "), result.output
         assert len(result.output.strip().splitlines()) == 1
