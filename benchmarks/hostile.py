@@ -171,7 +171,7 @@ NAMES = [f"a\n{MARKER}", f"x\r{MARKER}", f"y\u2028{MARKER}", f"z\x85{MARKER}", "
          "\t", "tab\tname", "ünïcödé", "名前", "emoji😀", "\u202eRTL", "a.b", "a=b", "", " ",
          "ground", "../../etc", "a/b", "\x1b[31mred", "x" * 10000, "zero\u200bwidth", "CON",
          "[bold]rich[/bold]", "[link=file:///etc/passwd]x[/link]", "%s%n", "{0}", "-rf",
-         "a,b", "'quoted'", '"dq"', "\\", "*", "nul\x00in"]  # fmt: skip
+         "a,b", "'quoted'", '"dq"', "\\", "*", "nul\x00in", "a[/x]", "[/]"]  # fmt: skip
 SOLVER_EDGES = {
     "t_end": [5e-324, 1e-320, 0, -1, NAN, INF, 1e300, "1 parsec", "1 kg", 10**30],
     "max_step": [1e300, 5e-324, 0, -1, NAN, INF, "1 year"],
@@ -275,6 +275,10 @@ class Mutator:
             result = op(self, data, notes, flags)
             if callable(result):
                 text_ops.append(result)
+        flags["refuse"] = [  # only values that a later mutation did not overwrite
+            f"{show(path)}={brief(value)}" for path, value in flags.pop("_refuse", [])
+            if repr(_get(data, path)) == repr(value)
+        ]
         text = dump_toml(data).encode("utf-8", "surrogatepass")
         for edit in text_ops:
             text = edit(text)
@@ -298,7 +302,7 @@ class Mutator:
             set_at(data, leaf[0], value)
             notes.append(f"{show(leaf[0])} = {brief(value)}")
             if isinstance(value, float) and not math.isfinite(value):
-                flags.setdefault("refuse", []).append(f"{show(leaf[0])}={brief(value)}")
+                flags.setdefault("_refuse", []).append((leaf[0], value))
 
     def odd_unit(self, data: dict, notes: list, flags: dict) -> None:
         """A quantity written with an odd unit."""
@@ -309,7 +313,7 @@ class Mutator:
             notes.append(f"{show(leaf[0])} = {brief(value)}")
             angular = isinstance(leaf[1], str) and re.search(r"(deg|rad|rpm)", leaf[1])
             if value in MUST_REFUSE or (value in ("50 percent", "1 percent") and angular):
-                flags.setdefault("refuse", []).append(f"{show(leaf[0])}={brief(value)}")
+                flags.setdefault("_refuse", []).append((leaf[0], value))
 
     def wrong_type(self, data: dict, notes: list, flags: dict) -> None:
         """A list, table, string, boolean or date where something else is expected."""
@@ -480,6 +484,16 @@ class Mutator:
             return text + b"\nname = \"\xff\xfe\"\n"
 
         return edit
+
+
+def _get(data: object, path: tuple) -> object:
+    """The node at ``path``, or a marker if there is none now."""
+    try:
+        for key in path:
+            data = data[key]
+    except (KeyError, IndexError, TypeError):
+        return "<gone>"
+    return data
 
 
 def _quantity_like(path: tuple, value: object) -> bool:
@@ -1511,7 +1525,7 @@ def collect(results: dict[str, list[dict]]) -> dict[str, dict]:
                             "tb_tail": entry.get("tb_tail"), "tail": entry.get("tail"),
                             "details": {k: entry.get(k) for k in ("delay", "signal", "group",
                                         "status", "touched_outside", "user_files_changed",
-                                        "stderr_tail", "messages") if entry.get(k)},
+                                        "stderr_tail", "messages", "double") if entry.get(k)},
                         })  # fmt: skip
     return classes
 
@@ -1521,6 +1535,8 @@ def confirm(classes: dict[str, dict], work: Path) -> None:
     repro = Path("/tmp/hostile_repro")
     shutil.rmtree(repro, ignore_errors=True)
     repro.mkdir()
+    for example in EXAMPLES.glob("*.toml"):  # the bases of reproducers that extend one
+        shutil.copy(example, repro / example.name)
     for found in classes.values():
         argv = found.get("argv")
         if found["category"] not in ("mutations", "cli") or not argv or argv[0] == "?":

@@ -220,3 +220,16 @@ def test_a_signal_at_a_random_moment_loses_nothing(tmp_path, seed):
     else:  # stopped before any result: nothing of the run's left in the folder
         assert proc.returncode in (130, -signum, 128 + signum), (proc.returncode, stderr)
         assert not out.exists() or not any(p.name == "timeseries.csv" for p in out.iterdir())
+
+
+def test_a_file_the_user_changed_since_is_the_users(tmp_path):
+    out = tmp_path / "out"
+    assert invoke("run", FOURBAR, "--out", out, *SHORT, "--no-ideal").exit_code == 0
+    (out / "wear.csv").write_text("my own edits")  # over the file jointwear wrote there
+    refused = invoke("run", FOURBAR, "--out", out, *SHORT, "--no-ideal")
+    assert refused.exit_code == 2
+    assert "wear.csv exists and was not written by jointwear, or was changed" in refused.output
+    assert (out / "wear.csv").read_text() == "my own edits"
+    # A run without clearance joints would remove the earlier wear table: not this one.
+    assert invoke("run", PENDULUM, "--out", out, *SHORT).exit_code == 0
+    assert (out / "wear.csv").read_text() == "my own edits"

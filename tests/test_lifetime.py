@@ -25,7 +25,7 @@ from typer.testing import CliRunner
 
 import jointwear as jw
 from jointwear.cli import app
-from jointwear.io import write_text
+from jointwear.io import append, write_text
 from jointwear.simulate import simulate
 from jointwear.studies.life import files as lifetime_files
 from jointwear.studies.life import update as lifetime_update
@@ -253,6 +253,12 @@ class Crash(Exception):
     pass
 
 
+def torn_row(file) -> None:
+    """Half a row, then the process dies."""
+    file.write("4,101,1")
+    raise Crash
+
+
 @pytest.mark.parametrize("how", ["exception", "signal", "signal_in_a_cycle"])
 def test_resume_gives_the_uninterrupted_run(tmp_path, monkeypatch, how):
     settings = {"cycles": 30, "overrides": FAST_WEAR, "max_change": "1%", "figures": False}
@@ -271,8 +277,8 @@ def test_resume_gives_the_uninterrupted_run(tmp_path, monkeypatch, how):
             life(FOURBAR, folder, **settings, progress=stop_at_third)
         # As if it died while writing the next update's rows, before its checkpoint.
         for name in ("life.csv", "profiles.csv"):
-            with open(folder / name, "a") as f:
-                f.write("4,101,1")
+            with pytest.raises(Crash):
+                append(folder / name, torn_row)
     elif how == "signal":
         stopped = life(FOURBAR, folder, **settings, progress=stop_at_third)
         assert stopped.status == "interrupted"

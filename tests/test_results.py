@@ -65,7 +65,9 @@ def test_save_then_load_gives_the_same_results(request, tmp_path, example):
     assert folder == tmp_path / "out"
     files = FILES + (CLEARANCE_FILES if example == "fourbar" else ())
     assert sorted(p.name for p in folder.iterdir()) == sorted((*files, RECORD))
-    assert json.loads((folder / RECORD).read_text()) == sorted(files)  # each file recorded
+    recorded = json.loads((folder / RECORD).read_text())  # each file, with size and time
+    assert sorted(recorded) == sorted(files)
+    assert all(recorded[name][0] == (folder / name).stat().st_size for name in files)
     assert_same_results(jw.load_results(folder), results)
 
 

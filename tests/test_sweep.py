@@ -24,6 +24,7 @@ from typer.testing import CliRunner
 import jointwear as jw
 from jointwear.cli import app
 from jointwear.figures.sweep import plot_sweep, quantity
+from jointwear.io import write_text
 from jointwear.model import ModelError
 from jointwear.studies.sweep.cases import make_cases, make_plan, parse_vary, si_value
 from jointwear.studies.sweep.runners import _start_method
@@ -231,9 +232,9 @@ def test_changed_unfinished_and_new_cases_run_again(local_sweep, tmp_path):
     changed, unfinished = out / "cases" / CASES[0], out / "cases" / CASES[1]
     record = json.loads((changed / "case.json").read_text())
     record["model"]["solver"]["t_end"] = 0.02  # as if it had been run with other settings
-    (changed / "case.json").write_text(json.dumps(record))
+    write_text(changed / "case.json", json.dumps(record))  # as jointwear writes them
     summary = json.loads((unfinished / "summary.json").read_text())
-    (unfinished / "summary.json").write_text(json.dumps(summary | {"status": "interrupted"}))
+    write_text(unfinished / "summary.json", json.dumps(summary | {"status": "interrupted"}))
     before[CASES[1]] = (unfinished / "summary.json").stat().st_mtime_ns
     time.sleep(0.01)  # mtimes of rewritten files differ
 

@@ -5,11 +5,13 @@ The rule, for every command:
 - Writes go only inside the output folder the user named (``--out``), into files and
   subfolders jointwear creates there. A symbolic link inside that folder is never followed:
   a write or removal through one is refused.
-- Each folder jointwear writes to keeps a record of the files it wrote there
-  (``.jointwear-files``). A file is replaced or removed only if that record names it; a file
-  of the user's, or one an older version wrote without a record, is left as it is. Commands
-  check the files they will write before any work (``claim``), so a run is refused at once
-  rather than after hours.
+- Each folder jointwear writes to keeps a record of the files it wrote there, with each
+  one's size and modification time as written (``.jointwear-files``). A file is replaced or
+  removed only if that record names it and it is unchanged since (or jointwear was writing
+  it when it stopped); a file of the user's, one the user changed, or one an older version
+  wrote without a record, is left as it is.
+  Commands check the files they will write before any work (``claim``), so a run is refused
+  at once rather than after hours.
 - Every file is written whole or not at all (:func:`write_atomic`): a reader (a person, a
   resumed run, a sweep skipping finished cases) never finds half a file.
 """
@@ -21,6 +23,7 @@ import os
 import secrets
 from collections.abc import Callable, Iterable
 from pathlib import Path
+from typing import IO
 
 from .model.errors import ModelError
 
@@ -32,9 +35,13 @@ class ForeignFileError(OSError):
 
 
 def owned(path: str | os.PathLike) -> bool:
-    """Whether ``path`` is a file jointwear wrote (named in its folder's record), not a link."""
+    """Whether jointwear wrote ``path`` and nobody changed it since (not a link either)."""
     target = Path(path)
-    return not target.is_symlink() and target.name in _record(target.parent)
+    if target.is_symlink():
+        return False
+    record = _record(target.parent)
+    # None: jointwear was writing it when it stopped (a crash, a kill): its own, half done
+    return target.name in record and record[target.name] in (None, _fingerprint(target))
 
 
 def claim(folder: str | os.PathLike, names: Iterable[str]) -> None:
@@ -62,8 +69,8 @@ def claim(folder: str | os.PathLike, names: Iterable[str]) -> None:
                 problems.append(f"out: {path} exists and is not a folder; move it away")
         elif path.exists() and not owned(path):
             problems.append(
-                f"out: {path} exists and was not written by jointwear (no record of it in "
-                f"{path.parent / RECORD}); move it away or choose another --out"
+                f"out: {path} exists and was not written by jointwear, or was changed since "
+                f"(see {path.parent / RECORD}); move it away or choose another --out"
             )
     if problems:
         raise ModelError(list(dict.fromkeys(problems)))
@@ -104,7 +111,7 @@ def write_atomic(path: str | os.PathLike, write: Callable[[Path], object]) -> Pa
     """
     target = Path(path)
     _check_writable(target)
-    _add_to_record(target)
+    _add_to_record(target, writing=True)
     temporary = target.with_name(f"{target.name}.{secrets.token_hex(4)}.tmp")
     try:
         write(temporary)
@@ -112,7 +119,18 @@ def write_atomic(path: str | os.PathLike, write: Callable[[Path], object]) -> Pa
         os.replace(temporary, target)
     finally:
         temporary.unlink(missing_ok=True)
+    _add_to_record(target)
     return target
+
+
+def append(path: str | os.PathLike, write: Callable[[IO[str]], object]) -> None:
+    """Append to a text file jointwear wrote: ``write`` gets it open at its end."""
+    target = Path(path)
+    _check_writable(target)
+    _add_to_record(target, writing=True)
+    with open(target, "a", newline="") as file:
+        write(file)
+    _add_to_record(target)
 
 
 def write_text(path: str | os.PathLike, text: str) -> Path:
@@ -121,12 +139,12 @@ def write_text(path: str | os.PathLike, text: str) -> Path:
 
 
 def remove(path: str | os.PathLike) -> None:
-    """Remove ``path`` if jointwear wrote it; anything else there is left alone."""
+    """Remove ``path`` if jointwear wrote it and it is unchanged; anything else is left alone."""
     target = Path(path)
     if owned(target):
         target.unlink(missing_ok=True)
         names = _record(target.parent)
-        names.discard(target.name)
+        names.pop(target.name, None)
         _write_record(target.parent, names)
 
 
@@ -180,34 +198,52 @@ def _check_writable(target: Path) -> None:
     if target.is_symlink() or target.parent.is_symlink():
         raise ForeignFileError(_link_problem(target if target.is_symlink() else target.parent))
     if target.exists() and not owned(target):
-        raise ForeignFileError(f"out: {target} was not written by jointwear; it is left as it is")
+        raise ForeignFileError(
+            f"out: {target} was not written by jointwear, or was changed since; it is left as it is"
+        )
 
 
-def _record(folder: Path) -> set[str]:
+def _fingerprint(path: Path) -> list[int] | None:
+    """Size [bytes] and modification time [ns] of a file, or None if there is none."""
+    try:
+        stat = path.stat()
+    except (OSError, ValueError):
+        return None
+    return [stat.st_size, stat.st_mtime_ns]
+
+
+def _record(folder: Path) -> dict[str, list[int] | None]:
     record = folder / RECORD
     if record.is_symlink() or not record.is_file():
-        return set()
+        return {}
     try:
         names = json.loads(record.read_text())
     except (OSError, ValueError):
-        return set()
-    return {n for n in names if isinstance(n, str)} if isinstance(names, list) else set()
+        return {}
+    if not isinstance(names, dict):
+        return {}
+    return {
+        name: written
+        for name, written in names.items()
+        if written is None or (isinstance(written, list) and len(written) == 2)
+    }
 
 
-def _add_to_record(target: Path) -> None:
+def _add_to_record(target: Path, writing: bool = False) -> None:
+    """Record ``target`` as jointwear's: being written (no fingerprint yet), or as it is now."""
     names = _record(target.parent)
-    if target.name not in names:
-        _write_record(target.parent, names | {target.name})
+    names[target.name] = None if writing else _fingerprint(target)
+    _write_record(target.parent, names)
 
 
-def _write_record(folder: Path, names: set[str]) -> None:
-    """Replace the record at once (first, before the file it names is written)."""
+def _write_record(folder: Path, names: dict[str, list[int] | None]) -> None:
+    """Replace the record at once."""
     record = folder / RECORD
     if record.is_symlink():
         raise ForeignFileError(_link_problem(record))
     temporary = folder / f"{RECORD}.{secrets.token_hex(4)}.tmp"
     try:
-        temporary.write_text(json.dumps(sorted(names), indent=0))
+        temporary.write_text(json.dumps(names, indent=0, sort_keys=True))
         os.chmod(temporary, 0o644)
         os.replace(temporary, record)
     finally:

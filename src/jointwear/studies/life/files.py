@@ -17,7 +17,7 @@ from pathlib import Path
 
 import pandas as pd
 
-from ...io import check_folder, claim, make_folder, remove, write_atomic, write_text
+from ...io import append, check_folder, claim, make_folder, remove, write_atomic, write_text
 from ...model import ModelError
 from ...results.clearance import WEAR_COLUMNS
 from ...results.run_state import RunState, load_run_state
@@ -85,8 +85,7 @@ def start_folder(folder: Path, columns: list[str], record: dict) -> None:
 def append_update(folder: Path, row: list, profiles: list[list]) -> None:
     """Add an update's row to life.csv and its profiles to profiles.csv."""
     for name, rows in ((TABLE, [row]), (PROFILES, profiles)):
-        with open(folder / name, "a", newline="") as f:
-            csv.writer(f).writerows(rows)
+        append(folder / name, lambda file, rows=rows: csv.writer(file).writerows(rows))
 
 
 def save_checkpoint(folder: Path, point: Checkpoint, record: dict) -> None:
