@@ -226,3 +226,36 @@ def test_numbers_of_thousands_of_digits_and_special_files_are_one_line(tmp_path)
     extending.write_text('extends = "/dev/zero"\n')
     assert "not a file" in one_line_failure(invoke("check", extending))
     assert "not a file" in one_line_failure(invoke("check", tmp_path))
+
+
+@pytest.mark.parametrize(
+    "args",
+    [
+        ("check", PENDULUM, "--set", "name=a[/x]"),  # rich markup in the model's name
+        ("check", PENDULUM, "--set", "name=\x1b[31mred"),  # a terminal escape in it
+    ],
+)
+def test_the_models_name_is_printed_as_text(args):
+    result = invoke(*args)
+    assert result.exit_code == 0, result.output
+    first = result.output.splitlines()[0]
+    assert first.isprintable() and first.endswith("': valid")
+
+
+def test_deep_keys_huge_sweeps_and_null_paths_are_refused_at_once(tmp_path):
+    deep = tmp_path / "deep.toml"
+    deep.write_text(PENDULUM.read_text() + "\nzz" + ".a" * 28571 + " = 1\n")
+    assert "nested too deeply" in one_line_failure(invoke("check", deep))
+    null = tmp_path / "null.toml"
+    null.write_text('extends = "\\u0000"\n')
+    assert "extends: expected the path" in one_line_failure(invoke("check", null))
+    many = ",".join(str(i) for i in range(1, 41))
+    line = one_line_failure(invoke("sweep", PENDULUM, "--out", tmp_path / "s", "--vary",
+                                   f"solver.rtol={many}", "--vary", f"solver.atol={many}",
+                                   "--vary", f"solver.max_step={many}"))  # fmt: skip
+    assert "64,000 cases" in line
+    line = one_line_failure(invoke("life", FOURBAR, "--out", tmp_path / "l", "--cycles", 10**21))
+    assert "cycles" in line
+    line = one_line_failure(invoke("life", FOURBAR, "--out", tmp_path / "l", "--cycles", 5,
+                                   "--max-growth", "inf"))  # fmt: skip
+    assert "max_growth" in line

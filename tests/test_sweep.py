@@ -342,8 +342,8 @@ def test_invalid_vary_exits_2_with_one_line_before_anything_runs(tmp_path, vary,
 @pytest.mark.parametrize(
     ("options", "message"),
     [
-        (["--cycles", 0], "--cycles: got 0; expected a whole number >= 1"),
-        (["--workers", 0], "--workers: got 0; expected a whole number >= 1"),
+        (["--cycles", 0], "--cycles: got 0; expected a whole number from 1 to 1e+15"),
+        (["--workers", 0], "--workers: got 0; expected a whole number from 1 to 1e+15"),
         (
             ["--workers", 2, "--scheduler", "tcp://127.0.0.1:8786"],
             "--workers: only for local processes; with --scheduler the cluster's workers run",

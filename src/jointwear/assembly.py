@@ -119,7 +119,7 @@ def assemble(model: Model, system: System, tolerance: float | None = None) -> As
     q, qd = y[:n].copy(), y[n:].copy()
     phi, cq, phi_t = evaluate(system, q, qd)
     iterations = 0
-    while np.max(np.abs(phi), initial=0.0) > tol:
+    while not np.max(np.abs(phi), initial=0.0) <= tol:  # NaN included
         if iterations == MAX_ITERATIONS or not (np.all(np.isfinite(phi)) and _finite(cq)):
             worst = np.argsort(-np.abs(phi))[:3]
             unmet = "; ".join(f"{labels[i]} off by {abs(phi[i]):.3g}" for i in worst)

@@ -171,7 +171,7 @@ def check(model: ModelPath, overrides: Overrides = None) -> None:
             raise ModelError([f"drivers: {lock.message()}"])
     except ModelError as error:
         raise fail(error) from None
-    out.print(f"model '{parsed.name}': valid")
+    out.print(f"model '{one_line(parsed.name)}': valid", **PLAIN)
     freed = freed_degrees_of_freedom(parsed)
     out.print(
         f"degrees of freedom: {assembly.dof_without_drivers + freed} (joints only), "
@@ -319,5 +319,10 @@ def plot(
     except OSError as error:
         err.print(f"{folder}: cannot write its figures: {one_line(str(error))}", **PLAIN)
         raise typer.Exit(code=3) from None
+    except (ValueError, LookupError, TypeError) as error:  # tables that do not fit the model
+        reason = one_line(" ".join(str(error).split()))[:300]
+        err.print(f"{folder}: cannot draw its results ({type(error).__name__}: {reason}); "
+                  "the folder is damaged or incomplete: run the model again", **PLAIN)  # fmt: skip
+        raise typer.Exit(code=2) from None
     for path in figures:
         out.print(str(path), soft_wrap=True)

@@ -15,6 +15,7 @@ from .overrides import apply_changes
 
 EXTENDING_KEYS = ("extends", "set", "name", "description")
 MAX_FILE_BYTES = 10**7  # a model file larger than this is not one
+MAX_KEY_DEPTH = 200  # dotted parts in one key: far more than a model has
 
 
 def read_model_data(path: Path) -> dict:
@@ -36,7 +37,7 @@ def _resolve(path: Path, chain: tuple[Path, ...]) -> dict:
             raise ModelError([f"{path}: set: only a file with 'extends' may change values"])
         return data
     base = data["extends"]
-    if not isinstance(base, str) or not base:
+    if not isinstance(base, str) or not base or "\x00" in base:
         raise ModelError([f"{path}: extends: expected the path of a model file, as a string"])
     extra = [key for key in data if key not in EXTENDING_KEYS]
     if extra:
@@ -85,7 +86,10 @@ def _read_toml(path: Path) -> dict:
             raise ModelError(
                 [f"{path}: larger than {MAX_FILE_BYTES // 10**6} MB; a model file is a few kB"]
             )
-        return tomllib.loads(path.read_bytes().decode())
+        text = path.read_bytes().decode()
+        if _deepest_key(text) > MAX_KEY_DEPTH:  # tomllib takes minutes over such keys
+            raise ModelError([f"{path}: {TOO_DEEP}"])
+        return tomllib.loads(text)
     except OSError as error:
         raise ModelError([f"{path}: cannot read the file; {error.strerror}"]) from None
     except UnicodeDecodeError:
@@ -98,3 +102,8 @@ def _read_toml(path: Path) -> dict:
         raise ModelError([f"{place}: invalid TOML: {what}; fix the syntax there"]) from None
     except ValueError:  # a number of thousands of digits
         raise ModelError([f"{path}: {TOO_LONG}"]) from None
+
+
+def _deepest_key(text: str) -> int:
+    """The most dots left of an ``=`` on any line: an upper bound on a key's depth."""
+    return max((line.partition("=")[0].count(".") for line in text.splitlines()), default=0)

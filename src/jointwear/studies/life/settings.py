@@ -16,6 +16,7 @@ from ...model import Model, ModelError
 from ...model.functions import period
 from ...units import to_si
 
+MAX_CYCLES = 10**15  # more cycles than any machine runs, and within a table's 64-bit integers
 PERIOD_RTOL = 1e-9  # periods whose ratio is this close to a whole number divide each other
 
 
@@ -37,8 +38,11 @@ class LifeSettings:
         """One line per invalid setting (empty if all are fine)."""
         lines = []
         for name, least in (("cycles", 1), ("settle_cycles", 0), ("measure_cycles", 1)):
-            if not _whole(getattr(self, name), least):
-                lines.append(f"{name}: {getattr(self, name)!r} is not a whole number >= {least}")
+            value = getattr(self, name)
+            if not _whole(value, least) or value > MAX_CYCLES:
+                lines.append(
+                    f"{name}: {value!r} is not a whole number from {least} to {MAX_CYCLES:.0e}"
+                )
         least = 2 * self.measure_cycles if _whole(self.measure_cycles, 1) else 2
         if not _whole(self.max_update_cycles, least):
             lines.append(
@@ -56,10 +60,10 @@ class LifeSettings:
         except ValueError as error:
             lines.append(f"max_change: {error}")
         growth = self.max_growth
-        if not _number(growth) or not growth > 0:
+        if not _number(growth) or not 0 < growth < math.inf:
             lines.append(
-                f"max_growth: {growth!r} is not a positive number; give the clearance growth "
-                "at which to stop as a share of the nominal clearance (1.0: doubled)"
+                f"max_growth: {growth!r} is not a finite positive number; give the clearance "
+                "growth at which to stop as a share of the nominal clearance (1.0: doubled)"
             )
         return lines
 

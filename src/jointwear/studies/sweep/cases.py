@@ -13,6 +13,7 @@ from __future__ import annotations
 import hashlib
 import itertools
 import json
+import math
 import os
 import re
 import tomllib
@@ -26,6 +27,7 @@ from ...model.overrides import toml_value
 
 VARY_EXAMPLE = "joints.coupler_follower.clearance.friction_coefficient=0.05,0.1"
 SWEEP_FILE_KEYS = ("vary", "set")
+MAX_CASES = 10_000  # cases in one sweep: beyond this, a mistyped --vary rather than a plan
 MAX_ID_LENGTH = 120  # characters of a case name (a folder name) before it is shortened
 _UNSAFE = re.compile(r"[^A-Za-z0-9.+-]+")  # characters a case name does not keep
 
@@ -242,6 +244,11 @@ def make_cases(vary: Mapping[str, Sequence[str]]) -> list[Case]:
     vary
         Dotted path -> value texts (``parse_vary``), in the order they vary (first slowest).
     """
+    count = math.prod(len(values) for values in vary.values())
+    if count > MAX_CASES:
+        raise ModelError(
+            [f"vary: the values give {count:,} cases; at most {MAX_CASES:,} run in one sweep"]
+        )
     keys = _short_keys(list(vary))
     cases = []
     for texts in itertools.product(*vary.values()):

@@ -30,6 +30,7 @@ from ...interrupts import stop_requests
 from ...io import check_folder, claim, make_folder, write_atomic, write_text
 from ...model import Model, ModelError, load_model
 from ...status import NOT_RUN, SUCCESS
+from ..life.settings import MAX_CYCLES
 from .cases import Case, check_vary, make_cases, si_value, value_text
 from .runners import CaseTask, Outcome, read_record, run_dask, run_local, run_serial
 
@@ -191,8 +192,10 @@ def _check_options(
         if path in vary
     ]
     for option, value in (("--cycles", cycles), ("--workers", workers)):
-        if value is not None and not _whole(value):
-            problems.append(f"{option}: got {value!r}; expected a whole number >= 1")
+        if value is not None and not (_whole(value) and value <= MAX_CYCLES):
+            problems.append(
+                f"{option}: got {value!r}; expected a whole number from 1 to {MAX_CYCLES:.0e}"
+            )
     if workers is not None and scheduler is not None:
         problems.append(
             "--workers: only for local processes; with --scheduler the cluster's workers run "
