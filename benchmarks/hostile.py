@@ -192,8 +192,18 @@ SOLVER_EDGES = {
     "assembly_tolerance": [0, -1, 1e300, NAN],
 }
 GEOMETRY = [  # (path pattern, values): degenerate but well-typed geometry
-    ("axis", [[1e-200, 0.0], [0.0, 0.0], [NAN, 0.0], [1e300, 1e300], [5e-324, 5e-324],
-              [1.0], [1.0, 0.0, 0.0]]),
+    (
+        "axis",
+        [
+            [1e-200, 0.0],
+            [0.0, 0.0],
+            [NAN, 0.0],
+            [1e300, 1e300],
+            [5e-324, 5e-324],
+            [1.0],
+            [1.0, 0.0, 0.0],
+        ],
+    ),
     ("width", [1e300, 1e-300, 0, "1e300 mm", -1]),
     ("bearing_radius", [1e300, 0, "9.8 mm", "9.79 mm", 1e-300]),
     ("journal_radius", [1e300, 0, "10.0 mm", "10.5 mm", -1]),
@@ -276,7 +286,8 @@ class Mutator:
             if callable(result):
                 text_ops.append(result)
         flags["refuse"] = [  # only values that a later mutation did not overwrite
-            f"{show(path)}={brief(value)}" for path, value in flags.pop("_refuse", [])
+            f"{show(path)}={brief(value)}"
+            for path, value in flags.pop("_refuse", [])
             if repr(_get(data, path)) == repr(value)
         ]
         text = dump_toml(data).encode("utf-8", "surrogatepass")
@@ -289,8 +300,7 @@ class Mutator:
         leaves = [
             (p, v)
             for p, v in walk(data)
-            if p and not isinstance(v, dict | list)
-            and (not numeric_only or _quantity_like(p, v))
+            if p and not isinstance(v, dict | list) and (not numeric_only or _quantity_like(p, v))
         ]
         return self.rng.choice(leaves) if leaves else None
 
@@ -471,7 +481,7 @@ class Mutator:
             if kind == "bom":
                 return b"\xef\xbb\xbf" + text
             if kind == "latin1":
-                return text.replace(b"name = \"", b"name = \"\xe9", 1)
+                return text.replace(b'name = "', b'name = "\xe9', 1)
             if kind == "crlf":
                 return text.replace(b"\n", b"\r\n")
             if kind == "dup_header":
@@ -481,7 +491,7 @@ class Mutator:
                 return b"\n".join(lines)
             if kind == "huge_int":
                 return b"zz = " + b"9" * 10000 + b"\n" + text
-            return text + b"\nname = \"\xff\xfe\"\n"
+            return text + b'\nname = "\xff\xfe"\n'
 
         return edit
 
@@ -538,8 +548,11 @@ def mutation_tasks(args: argparse.Namespace, work: Path) -> list[dict]:
         steps = [{"kind": "check", "argv": ["check", str(path)], "timeout": args.timeout}]
         run_argv = ["run", str(path), "--out", str(out), "--t-end", "0.002", "--no-figures",
                     "--no-ideal"]  # fmt: skip
-        when = "always" if i % args.run_every == 0 else (
-            "if_valid" if rng.random() < args.run_valid_share else None)
+        when = (
+            "always"
+            if i % args.run_every == 0
+            else ("if_valid" if rng.random() < args.run_valid_share else None)
+        )
         if when:
             steps.append({"kind": "run", "argv": run_argv, "out": str(out), "when": when,
                           "timeout": args.timeout})  # fmt: skip
@@ -638,8 +651,11 @@ def sweep_file(folder: Path, name: str, text: str) -> str:
 
 def cli_tasks(args: argparse.Namespace, work: Path, fx: dict[str, Path]) -> list[dict]:
     """The argument cases (each one task of one step); ``--cli-cases`` of them, cycled."""
-    m, pend, slider = str(FOURBAR), str(EXAMPLES / "pendulum.toml"), str(
-        EXAMPLES / "slider_crank_piston_clearance.toml")
+    m, pend, slider = (
+        str(FOURBAR),
+        str(EXAMPLES / "pendulum.toml"),
+        str(EXAMPLES / "slider_crank_piston_clearance.toml"),
+    )
     outs = work / "cliouts"
     counter = iter(range(10**6))
 
@@ -680,11 +696,38 @@ def cli_tasks(args: argparse.Namespace, work: Path, fx: dict[str, Path]) -> list
     cases += [(f"check --set {brief(s, 60)}", ["check", m, "--set", s]) for s in sets[:6]]
     cases.append(("run with 2000 --set", ["run", m, "--out", out(), *quick,
                                           *["--set", "solver.rtol=1e-6"] * 2000]))  # fmt: skip
-    cases.append(("lock-up: coupler shortened", ["run", m, "--out", out(), "--t-end", "0.02",
-                  "--no-figures", "--no-ideal", "--set", "bodies.coupler.points.follower_end="
-                  "[0.02, 0.0]", "--set", "bodies.coupler.points.crank_end=[-0.02, 0.0]"]))
-    cases.append(("check lock-up", ["check", m, "--set", "bodies.coupler.points.follower_end="
-                  "[0.02, 0.0]", "--set", "bodies.coupler.points.crank_end=[-0.02, 0.0]"]))
+    cases.append(
+        (
+            "lock-up: coupler shortened",
+            [
+                "run",
+                m,
+                "--out",
+                out(),
+                "--t-end",
+                "0.02",
+                "--no-figures",
+                "--no-ideal",
+                "--set",
+                "bodies.coupler.points.follower_end=[0.02, 0.0]",
+                "--set",
+                "bodies.coupler.points.crank_end=[-0.02, 0.0]",
+            ],
+        )
+    )
+    cases.append(
+        (
+            "check lock-up",
+            [
+                "check",
+                m,
+                "--set",
+                "bodies.coupler.points.follower_end=[0.02, 0.0]",
+                "--set",
+                "bodies.coupler.points.crank_end=[-0.02, 0.0]",
+            ],
+        )
+    )
     long_name = "n" * 300
     bad_outs = {"a file": str(fx["a_file"]), "under a file": str(fx["a_file"] / "x"),
                 "/proc": "/proc/hostile_out", "/proc/self": "/proc/self/hostile",
@@ -703,8 +746,15 @@ def cli_tasks(args: argparse.Namespace, work: Path, fx: dict[str, Path]) -> list
         bad_outs["a full tmpfs"] = str(fx["full"] / "out")
     for what, target in bad_outs.items():
         cases.append((f"run --out {what}", ["run", m, "--out", target, *quick]))
-        if what in ("a file", "/proc", "name > 255 bytes", "locked (chattr +i)", "a full tmpfs",
-                    "a run folder", "empty"):
+        if what in (
+            "a file",
+            "/proc",
+            "name > 255 bytes",
+            "locked (chattr +i)",
+            "a full tmpfs",
+            "a run folder",
+            "empty",
+        ):
             cases.append((f"life --out {what}", ["life", m, "--out", target, "--cycles", "5",
                                                  "--no-figures"]))  # fmt: skip
             cases.append((f"sweep --out {what}", ["sweep", m, "--out", target, "--t-end",
@@ -724,25 +774,37 @@ def cli_tasks(args: argparse.Namespace, work: Path, fx: dict[str, Path]) -> list
         cases.append((f"sweep --vary {brief(v, 50)}", [*swp, "--out", out(), "--vary", v]))
     cases.append(("sweep same path twice", [*swp, "--out", out(), "--vary", f"{fc}=0",
                                             "--vary", f"{fc}=0.1"]))  # fmt: skip
-    cases.append(("sweep 3 x 40 cases, cartesian of names", [*swp, "--out", out(),
-                  "--vary", "name=" + ",".join(f"n{i}" for i in range(40)),
-                  "--vary", "description=" + ",".join(f"d{i}" for i in range(40)),
-                  "--vary", "solver.rtol=" + ",".join(f"{i}e-6" for i in range(1, 41))]))
+    cases.append(
+        (
+            "sweep 3 x 40 cases, cartesian of names",
+            [
+                *swp,
+                "--out",
+                out(),
+                "--vary",
+                "name=" + ",".join(f"n{i}" for i in range(40)),
+                "--vary",
+                "description=" + ",".join(f"d{i}" for i in range(40)),
+                "--vary",
+                "solver.rtol=" + ",".join(f"{i}e-6" for i in range(1, 41)),
+            ],
+        )
+    )
     sfd = work / "sweepfiles"
     sweep_files = {
-        "deep": f"[vary]\n\"solver.t_end\" = {deep_value}\n",
+        "deep": f'[vary]\n"solver.t_end" = {deep_value}\n',
         "deep dotted": "[vary]\n" + "a." * DEEP + "b = [1]\n",
         "scalar vary": "vary = 1\n",
-        "vary not list": "[vary]\n\"solver.t_end\" = 0.1\n",
-        "empty list": "[vary]\n\"solver.t_end\" = []\n",
-        "unknown table": "[bogus]\na = 1\n[vary]\n\"solver.t_end\" = [0.001]\n",
-        "set deep": f"[set]\n\"solver.t_end\" = {deep_table}\n[vary]\n\"solver.rtol\" = [1e-6]\n",
+        "vary not list": '[vary]\n"solver.t_end" = 0.1\n',
+        "empty list": '[vary]\n"solver.t_end" = []\n',
+        "unknown table": '[bogus]\na = 1\n[vary]\n"solver.t_end" = [0.001]\n',
+        "set deep": f'[set]\n"solver.t_end" = {deep_table}\n[vary]\n"solver.rtol" = [1e-6]\n',
         "nested vary": "[vary.solver]\nt_end = [0.001, 0.002]\n",
         "not toml": "this is not = = toml",
         "binary": "\x00\x01\x02",
-        "nan values": "[vary]\n\"solver.t_end\" = [nan, inf]\n",
-        "mixed types": "[vary]\n\"solver.t_end\" = [0.001, \"1 ms\", true, [1], {a = 1}]\n",
-        "huge int": "[vary]\n\"solver.max_steps\" = [" + "9" * 5000 + "]\n",
+        "nan values": '[vary]\n"solver.t_end" = [nan, inf]\n',
+        "mixed types": '[vary]\n"solver.t_end" = [0.001, "1 ms", true, [1], {a = 1}]\n',
+        "huge int": '[vary]\n"solver.max_steps" = [' + "9" * 5000 + "]\n",
     }
     for name, text in sweep_files.items():
         path = sweep_file(sfd, name.replace(" ", "_"), text)
@@ -759,29 +821,36 @@ def cli_tasks(args: argparse.Namespace, work: Path, fx: dict[str, Path]) -> list
         cases.append((f"sweep --scheduler {s!r}", [*swp, "--out", out(), "--scheduler", s,
                                                    "--vary", f"{fc}=0"]))  # fmt: skip
     life = ["life", m, "--no-figures"]
-    life_opts = [["--cycles", "0"], ["--cycles", "-1"], ["--cycles", "1000000000000000000000"],
-                 ["--cycles", "9223372036854775807"], ["--cycles", "1e3"],
-                 ["--cycles", "5", "--settle-cycles", "-1"],
-                 ["--cycles", "5", "--settle-cycles", "0"],
-                 ["--cycles", "5", "--measure-cycles", "0"],
-                 ["--cycles", "5", "--steady-tolerance", "nan"],
-                 ["--cycles", "5", "--steady-tolerance", "-1"],
-                 ["--cycles", "5", "--steady-tolerance", "inf"],
-                 ["--cycles", "5", "--max-update-cycles", "0"],
-                 ["--cycles", "50", "--max-change", "0%"],
-                 ["--cycles", "5", "--max-change", "-1 um"],
-                 ["--cycles", "5", "--max-change", "nan"],
-                 ["--cycles", "5", "--max-change", "1 kg"],
-                 ["--cycles", "5", "--max-change", "1e400%"],
-                 ["--cycles", "5", "--max-change", ""],
-                 ["--cycles", "5", "--max-change", "5e-324 m"],
-                 ["--cycles", "50", "--max-change", "1e300 m"],
-                 ["--cycles", "5", "--max-growth", "nan"], ["--cycles", "5", "--max-growth", "0"],
-                 ["--cycles", "5", "--max-growth", "-1"], ["--cycles", "5", "--max-growth", "inf"],
-                 ["--cycles", "50", "--max-growth", "1e300"],
-                 ["--cycles", "5", "--set", f"{CLEARANCE_PATH}.wear_coefficient=1e300 1/Pa"],
-                 ["--cycles", "5", "--set", "solver.t_end=5e-324"],
-                 ["--cycles", "5", "--set", f"drivers.motor.function.speed={deep_value}"]]
+    life_opts = [
+        ["--cycles", "0"],
+        ["--cycles", "-1"],
+        ["--cycles", "1000000000000000000000"],
+        ["--cycles", "9223372036854775807"],
+        ["--cycles", "1e3"],
+        ["--cycles", "5", "--settle-cycles", "-1"],
+        ["--cycles", "5", "--settle-cycles", "0"],
+        ["--cycles", "5", "--measure-cycles", "0"],
+        ["--cycles", "5", "--steady-tolerance", "nan"],
+        ["--cycles", "5", "--steady-tolerance", "-1"],
+        ["--cycles", "5", "--steady-tolerance", "inf"],
+        ["--cycles", "5", "--max-update-cycles", "0"],
+        ["--cycles", "50", "--max-change", "0%"],
+        ["--cycles", "5", "--max-change", "-1 um"],
+        ["--cycles", "5", "--max-change", "nan"],
+        ["--cycles", "5", "--max-change", "1 kg"],
+        ["--cycles", "5", "--max-change", "1e400%"],
+        ["--cycles", "5", "--max-change", ""],
+        ["--cycles", "5", "--max-change", "5e-324 m"],
+        ["--cycles", "50", "--max-change", "1e300 m"],
+        ["--cycles", "5", "--max-growth", "nan"],
+        ["--cycles", "5", "--max-growth", "0"],
+        ["--cycles", "5", "--max-growth", "-1"],
+        ["--cycles", "5", "--max-growth", "inf"],
+        ["--cycles", "50", "--max-growth", "1e300"],
+        ["--cycles", "5", "--set", f"{CLEARANCE_PATH}.wear_coefficient=1e300 1/Pa"],
+        ["--cycles", "5", "--set", "solver.t_end=5e-324"],
+        ["--cycles", "5", "--set", f"drivers.motor.function.speed={deep_value}"],
+    ]
     for opts in life_opts:
         cases.append((f"life {' '.join(opts)[:60]}", [*life, "--out", out(), *opts]))
     for name in ("empty", "run", "damaged_life", "life_nostate", "sweep"):
@@ -855,8 +924,18 @@ def traceback_in_text(text: str) -> dict:
     """Exception type and last frame of a traceback printed in ``text``."""
     frames = re.findall(r'File "([^"]+)", line (\d+)', text)
     tail = text[text.rfind("Traceback") :].strip().splitlines()
-    exc = next((line for line in reversed(tail) if re.match(r"^\w[\w.]*(Error|Exception|"
-                                                             r"Interrupt|Exit)\b", line)), "?")
+    exc = next(
+        (
+            line
+            for line in reversed(tail)
+            if re.match(
+                r"^\w[\w.]*(Error|Exception|"
+                r"Interrupt|Exit)\b",
+                line,
+            )
+        ),
+        "?",
+    )
     file, line = frames[-1] if frames else ("?", "?")
     own = [f for f in frames if "/jointwear/" in f[0]]
     return {
@@ -999,9 +1078,15 @@ def worker(task_file: Path, result_file: Path) -> None:
                     break
                 except RecursionError as error:  # escaped the runner's own net
                     signal.alarm(0)
-                    steps_out.append({"kind": step["kind"], "argv": step["argv"], "exit": None,
-                                      "problems": ["traceback"],
-                                      **exception_info(error, error.__traceback__)})
+                    steps_out.append(
+                        {
+                            "kind": step["kind"],
+                            "argv": step["argv"],
+                            "exit": None,
+                            "problems": ["traceback"],
+                            **exception_info(error, error.__traceback__),
+                        }
+                    )
                     continue
                 exc = result.exception
                 if exc is not None and not isinstance(exc, SystemExit):
@@ -1010,10 +1095,15 @@ def worker(task_file: Path, result_file: Path) -> None:
                 kinds = analyse(step, result.exit_code, output, result.stderr, info, task)
                 if info is None and "traceback_text" in kinds:
                     info = traceback_in_text(output)
-                entry = {"kind": step["kind"], "argv": step["argv"], "exit": result.exit_code,
-                         "problems": kinds, "elapsed": time.perf_counter() - start,
-                         "tail": output.strip().splitlines()[-3:] if output.strip() else [],
-                         "status": status_of(Path(step["out"])) if step.get("out") else None}
+                entry = {
+                    "kind": step["kind"],
+                    "argv": step["argv"],
+                    "exit": result.exit_code,
+                    "problems": kinds,
+                    "elapsed": time.perf_counter() - start,
+                    "tail": output.strip().splitlines()[-3:] if output.strip() else [],
+                    "status": status_of(Path(step["out"])) if step.get("out") else None,
+                }
                 if info:
                     entry.update(info)
                 if result.exit_code == 2 and "Usage:" not in output:
@@ -1041,9 +1131,12 @@ def run_workers(tasks: list[dict], work: Path, name: str, n: int, hard_timeout: 
         task_file.write_text("".join(json.dumps(t) + "\n" for t in items))
         ids = {t["id"] for t in items}
         while True:
-            proc = subprocess.Popen([sys.executable, __file__, "--worker", str(task_file),
-                                     str(result_file)], cwd=cwd, stdout=subprocess.DEVNULL,
-                                    stderr=(work / f"{name}_worker_{index}.log").open("a"))
+            proc = subprocess.Popen(
+                [sys.executable, __file__, "--worker", str(task_file), str(result_file)],
+                cwd=cwd,
+                stdout=subprocess.DEVNULL,
+                stderr=(work / f"{name}_worker_{index}.log").open("a"),
+            )
             last_size, last_change = -1, time.monotonic()
             while proc.poll() is None:
                 time.sleep(1.0)
@@ -1121,15 +1214,41 @@ def session_processes(session: int) -> list[int]:
 
 SIGNAL_COMMANDS = {
     "run": lambda out: ["run", str(FOURBAR), "--out", str(out), "--t-end", "0.3"],
-    "run_noextras": lambda out: ["run", str(FOURBAR), "--out", str(out), "--t-end", "0.3",
-                                 "--no-figures"],
+    "run_noextras": lambda out: [
+        "run",
+        str(FOURBAR),
+        "--out",
+        str(out),
+        "--t-end",
+        "0.3",
+        "--no-figures",
+    ],
     "life": lambda out: ["life", str(FOURBAR), "--out", str(out), "--cycles", "1000"],
-    "sweep": lambda out: ["sweep", str(FOURBAR), "--out", str(out), "--t-end", "0.1",
-                          "--vary", f"{CLEARANCE_PATH}.friction_coefficient=0,0.1,0.2",
-                          "--workers", "2"],
-    "sweep_life": lambda out: ["sweep", str(FOURBAR), "--out", str(out), "--cycles", "300",
-                               "--vary", f"{CLEARANCE_PATH}.friction_coefficient=0,0.1",
-                               "--workers", "2", "--no-figures"],
+    "sweep": lambda out: [
+        "sweep",
+        str(FOURBAR),
+        "--out",
+        str(out),
+        "--t-end",
+        "0.1",
+        "--vary",
+        f"{CLEARANCE_PATH}.friction_coefficient=0,0.1,0.2",
+        "--workers",
+        "2",
+    ],
+    "sweep_life": lambda out: [
+        "sweep",
+        str(FOURBAR),
+        "--out",
+        str(out),
+        "--cycles",
+        "300",
+        "--vary",
+        f"{CLEARANCE_PATH}.friction_coefficient=0,0.1",
+        "--workers",
+        "2",
+        "--no-figures",
+    ],
 }
 SIGNAL_WEIGHTS = {"run": 5, "run_noextras": 2, "life": 2, "sweep": 2, "sweep_life": 1}
 
@@ -1154,8 +1273,12 @@ def signal_campaign(args: argparse.Namespace, work: Path) -> list[dict]:
         if rng.random() < 0.5:
             delay = rng.uniform(0, min(8.0, times["exit"] + 0.5))
         else:  # near a boundary, where windows are narrow
-            delay = max(0.0, rng.gauss(rng.choice([times["first"], times["summary"],
-                                                   times["first"] - 0.1]), 0.08))
+            delay = max(
+                0.0,
+                rng.gauss(
+                    rng.choice([times["first"], times["summary"], times["first"] - 0.1]), 0.08
+                ),
+            )
         sig = rng.choice([signal.SIGINT, signal.SIGTERM])
         group = rng.random() < 0.5
         double = rng.random() < 0.15  # a second signal shortly after
@@ -1202,12 +1325,23 @@ def signal_campaign(args: argparse.Namespace, work: Path) -> list[dict]:
             problems.append(f"bad_exit_{rc}")
         if orphans:
             problems.append("orphan_processes")
-        problems += _signal_folder_problems(kind, out, rc, out_text + err_text, delay,
-                                            phases[kind], sent)
-        record = {"id": f"s{i:03d}", "kind": kind, "delay": round(delay, 3), "sent": sent,
-                  "signal": signal.Signals(sig).name, "group": group, "double": double,
-                  "exit": rc, "problems": problems, "status": status_of(out),
-                  "argv": argv, "stderr_tail": err_text.strip().splitlines()[-3:]}
+        problems += _signal_folder_problems(
+            kind, out, rc, out_text + err_text, delay, phases[kind], sent
+        )
+        record = {
+            "id": f"s{i:03d}",
+            "kind": kind,
+            "delay": round(delay, 3),
+            "sent": sent,
+            "signal": signal.Signals(sig).name,
+            "group": group,
+            "double": double,
+            "exit": rc,
+            "problems": problems,
+            "status": status_of(out),
+            "argv": argv,
+            "stderr_tail": err_text.strip().splitlines()[-3:],
+        }
         if info:
             record.update(info)
         return record
@@ -1234,8 +1368,10 @@ def _signal_folder_problems(kind: str, out: Path, rc: int, stdout: str, delay: f
                 problems.append("incomplete_case_summary")
         finished_lines = re.findall(r"\] (\S+): success", stdout)
         for case in finished_lines:
-            if status_of(out / "cases" / case) != "success" and not (out / "cases" / case /
-                                                                     "life.csv").exists():
+            if (
+                status_of(out / "cases" / case) != "success"
+                and not (out / "cases" / case / "life.csv").exists()
+            ):
                 problems.append("finished_case_lost")
         if rc in (0, 1) and not marker.exists():
             problems.append("exit_0_1_without_table")
@@ -1334,14 +1470,18 @@ def files_campaign(args: argparse.Namespace, work: Path) -> list[dict]:
         "link_ideal": lambda box, out: (out / "ideal").symlink_to(box / "outside" / "ideal"),
         "link_figures": lambda box, out: (out / "figures").symlink_to(box / "outside" / "figures"),
         "link_checkpoint": lambda box, out: (out / "checkpoint").symlink_to(
-            box / "outside" / "checkpoint"),
+            box / "outside" / "checkpoint"
+        ),
         "link_cases": lambda box, out: (out / "cases").symlink_to(box / "outside" / "cases"),
         "link_summary": lambda box, out: (out / "summary.json").symlink_to(
-            box / "outside" / "plain" / "summary.json"),
+            box / "outside" / "plain" / "summary.json"
+        ),
         "link_record": lambda box, out: (out / ".jointwear-files").symlink_to(
-            box / "outside" / "plain" / ".jointwear-files"),
-        "record_traversal": lambda box, out: (out / ".jointwear-files").write_text(json.dumps(
-            ["../outside/sentinel.txt", "/etc/hostname", "..", "wear.csv"])),
+            box / "outside" / "plain" / ".jointwear-files"
+        ),
+        "record_traversal": lambda box, out: (out / ".jointwear-files").write_text(
+            json.dumps(["../outside/sentinel.txt", "/etc/hostname", "..", "wear.csv"])
+        ),
         "user_files": lambda box, out: user_files(out),
         "named_like_tool": lambda box, out: named_like_tool(out),
         "user_files_after_run": None,  # a finished run first, then the user's files
@@ -1361,18 +1501,36 @@ def files_campaign(args: argparse.Namespace, work: Path) -> list[dict]:
             else:
                 setup(box, out)
             mine = {p for p, v in tree_state(box).items() if tool.get(p) != v}
-            records.append(_files_case(f"{setup_name}/{cmd_name}", box, out,
-                                       [str(JOINTWEAR), *argv, "--out", str(out)], cwd, mine))
+            records.append(
+                _files_case(
+                    f"{setup_name}/{cmd_name}",
+                    box,
+                    out,
+                    [str(JOINTWEAR), *argv, "--out", str(out)],
+                    cwd,
+                    mine,
+                )
+            )
     # folders that become unwritable, or vanish, while the run goes on
     for i, (how, kind, delay) in enumerate([("lock", "run", 1.2), ("lock", "run", 1.6),
                                             ("replace", "run", 1.4), ("lock", "life", 2.0),
                                             ("lock", "sweep", 2.5), ("lock_ideal", "run", 1.3),
                                             ("lock", "run", 3.0)]):  # fmt: skip
         box, out = sandbox(f"midrun_{how}_{kind}_{i}")
-        argv = {"run": ["run", str(FOURBAR), "--t-end", "0.3"],
-                "life": ["life", str(FOURBAR), "--cycles", "400"],
-                "sweep": ["sweep", str(FOURBAR), "--t-end", "0.1", "--workers", "1",
-                          "--vary", f"{CLEARANCE_PATH}.friction_coefficient=0,0.1,0.2"]}[kind]
+        argv = {
+            "run": ["run", str(FOURBAR), "--t-end", "0.3"],
+            "life": ["life", str(FOURBAR), "--cycles", "400"],
+            "sweep": [
+                "sweep",
+                str(FOURBAR),
+                "--t-end",
+                "0.1",
+                "--workers",
+                "1",
+                "--vary",
+                f"{CLEARANCE_PATH}.friction_coefficient=0,0.1,0.2",
+            ],
+        }[kind]
         records.append(_midrun_case(f"midrun_{how}/{kind}", box, out,
                                     [str(JOINTWEAR), *argv, "--out", str(out)], cwd, how,
                                     delay))  # fmt: skip
@@ -1412,14 +1570,19 @@ def _midrun_case(label: str, box: Path, out: Path, argv: list[str], cwd: Path, h
     after = tree_state(box)
     record = _compare(label, box, out, argv, before, after, proc.returncode, text, set())
     rescued = re.search(r"the results are in (\S+)", text)
-    marker = {"sweep": "sweep.csv", "life": "checkpoint/checkpoint.json"}.get(argv[1],
-                                                                             "summary.json")
+    marker = {"sweep": "sweep.csv", "life": "checkpoint/checkpoint.json"}.get(
+        argv[1], "summary.json"
+    )
     kept = (out.is_dir() and is_file(out / marker)) or bool(
-        rescued and is_file(Path(rescued.group(1)) / "summary.json"))
+        rescued and is_file(Path(rescued.group(1)) / "summary.json")
+    )
     if argv[1] == "sweep":  # finished cases kept in their folders
         kept = kept or any((out / "cases").glob("*/summary.json"))
-    if proc.returncode == 3 and argv[1] == "run" and not (rescued and
-                                                          Path(rescued.group(1)).is_dir()):
+    if (
+        proc.returncode == 3
+        and argv[1] == "run"
+        and not (rescued and Path(rescued.group(1)).is_dir())
+    ):
         record["problems"].append("rescue_folder_missing")
     if proc.returncode != 2 and not kept:
         record["problems"].append("computed_results_lost")
@@ -1554,8 +1717,9 @@ def confirm(classes: dict[str, dict], work: Path) -> None:
         if found["kind"] in ("timeout", "hang"):
             continue
         try:
-            result = _sh(str(JOINTWEAR), *argv, cwd=work / "cwd", timeout=90,
-                         preexec_fn=limit_memory)
+            result = _sh(
+                str(JOINTWEAR), *argv, cwd=work / "cwd", timeout=90, preexec_fn=limit_memory
+            )
             lines = (result.stderr.strip() or result.stdout.strip()).splitlines()
             found["cli_exit"] = result.returncode
             found["cli_last_line"] = lines[-1][:300] if lines else ""
@@ -1586,8 +1750,12 @@ def parse_args(argv: list[str] | None = None) -> argparse.Namespace:
     p.add_argument("--cli-cases", type=int, default=None, help="default: every case once")
     p.add_argument("--signals", type=int, default=60)
     p.add_argument("--run-every", type=int, default=10, help="run every Nth mutated model")
-    p.add_argument("--run-valid-share", type=float, default=0.25,
-                   help="also run this share of the other models that pass check")
+    p.add_argument(
+        "--run-valid-share",
+        type=float,
+        default=0.25,
+        help="also run this share of the other models that pass check",
+    )
     p.add_argument("--timeout", type=float, default=60.0, help="per check or run [s]")
     p.add_argument("--workers", type=int, default=2)
     p.add_argument("--only", default="mutations,cli,signals,files")
@@ -1622,8 +1790,11 @@ def main(argv: list[str] | None = None) -> None:
     try:
         if "mutations" in only:
             tasks = mutation_tasks(args, args.work)
-            print(f"mutations: {len(tasks)} models, "
-                  f"{sum(len(t['steps']) - 1 for t in tasks)} runs planned", flush=True)
+            print(
+                f"mutations: {len(tasks)} models, "
+                f"{sum(len(t['steps']) - 1 for t in tasks)} runs planned",
+                flush=True,
+            )
             records = run_workers(tasks, args.work, "mut", args.workers, args.timeout * 2 + 60)
             results["mutations"] = [{**t, **records[t["id"]]} for t in tasks]
             print(f"  done in {time.monotonic() - started:.0f} s", flush=True)
