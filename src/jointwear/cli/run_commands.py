@@ -79,8 +79,11 @@ def run(
             err.print(line, soft_wrap=True, highlight=False, markup=False)
     moved = results.summary.get("not_written")
     if moved is not None:
-        where = f"; the results are in {moved['saved_in']}" if moved["saved_in"] else ""
-        err.print(f"could not write {moved['folder']}: {moved['error']}{where}", **PLAIN)
+        saved = moved["saved_in"] or f"{out_dir} (without its figures)"
+        err.print(
+            f"could not write {moved['folder']}: {moved['error']}; the results are in {saved}",
+            **PLAIN,
+        )
         raise typer.Exit(code=3)
     out.print(f"results in {out_dir}", soft_wrap=True)
     comparison = results.summary.get("ideal_comparison", {"status": SUCCESS})

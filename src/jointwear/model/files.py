@@ -87,7 +87,7 @@ def _read_toml(path: Path) -> dict:
                 [f"{path}: larger than {MAX_FILE_BYTES // 10**6} MB; a model file is a few kB"]
             )
         text = path.read_bytes().decode()
-        if _deepest_key(text) > MAX_KEY_DEPTH:  # tomllib takes minutes over such keys
+        if too_deep(text):  # tomllib takes minutes over such keys
             raise ModelError([f"{path}: {TOO_DEEP}"])
         return tomllib.loads(text)
     except OSError as error:
@@ -104,6 +104,10 @@ def _read_toml(path: Path) -> dict:
         raise ModelError([f"{path}: {TOO_LONG}"]) from None
 
 
-def _deepest_key(text: str) -> int:
-    """The most dots left of an ``=`` on any line: an upper bound on a key's depth."""
-    return max((line.partition("=")[0].count(".") for line in text.splitlines()), default=0)
+def too_deep(text: str) -> bool:
+    """Whether a TOML text has a key of more than ``MAX_KEY_DEPTH`` dotted parts.
+
+    Counts the dots left of an ``=`` on each line: an upper bound on a key's depth.
+    """
+    depth = max((line.partition("=")[0].count(".") for line in text.splitlines()), default=0)
+    return depth > MAX_KEY_DEPTH

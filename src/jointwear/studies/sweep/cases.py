@@ -23,6 +23,7 @@ from pathlib import Path
 
 from ...model import Model
 from ...model.errors import TOO_DEEP, TOO_LONG, ModelError, did_you_mean
+from ...model.files import too_deep
 from ...model.overrides import toml_value
 
 VARY_EXAMPLE = "joints.coupler_follower.clearance.friction_coefficient=0.05,0.1"
@@ -168,7 +169,10 @@ def read_sweep_file(path: str | os.PathLike) -> Plan:
     """
     path = Path(path)
     try:
-        data = tomllib.loads(path.read_bytes().decode())
+        text = path.read_bytes().decode()
+        if too_deep(text):
+            raise ModelError([f"{path}: {TOO_DEEP}"])
+        data = tomllib.loads(text)
     except OSError as error:
         raise ModelError([f"{path}: cannot read the sweep file; {error.strerror}"]) from None
     except (UnicodeDecodeError, tomllib.TOMLDecodeError) as error:
