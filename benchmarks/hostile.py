@@ -438,6 +438,8 @@ class Mutator:
         key = self.rng.choice(sorted(SOLVER_EDGES))
         value = self.rng.choice(SOLVER_EDGES[key])
         target = data.setdefault("set", {}) if "extends" in data else data
+        if not isinstance(target, dict):  # an earlier mutation made [set] something else
+            target = data["set"] = {}
         solver = target.get("solver")
         if not isinstance(solver, dict):
             solver = target["solver"] = {}
