@@ -259,3 +259,19 @@ def test_deep_keys_huge_sweeps_and_null_paths_are_refused_at_once(tmp_path):
     line = one_line_failure(invoke("life", FOURBAR, "--out", tmp_path / "l", "--cycles", 5,
                                    "--max-growth", "inf"))  # fmt: skip
     assert "max_growth" in line
+
+
+def test_a_kernel_division_by_zero_is_a_status(tmp_path):
+    # A journal of 1e-300 m: the contact's geometry underflows inside the compiled loop.
+    result = invoke("run", FOURBAR, "--out", tmp_path, "--t-end", "0.01", "--no-figures",
+                    "--no-ideal", "--set", f"{CLEARANCE}.journal_radius=1e-300")  # fmt: skip
+    assert result.exit_code == 1, result.output
+    assert result.output.startswith("non_finite: ZeroDivisionError in the compiled step loop")
+    assert strict_json(tmp_path / "summary.json")["status"] == "non_finite"
+
+
+def test_gravity_beyond_a_million_g_is_refused():
+    line = one_line_failure(
+        invoke("check", PENDULUM, "--set", "forces.0.acceleration=[0, 18446744073709551616]")
+    )
+    assert "a million g" in line

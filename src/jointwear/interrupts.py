@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import os
 import signal
+import sys
 import threading
 from collections.abc import Iterator
 from contextlib import contextmanager
@@ -75,3 +76,9 @@ def interruptible() -> Iterator[None]:
     finally:
         for s, handler in previous.items():
             signal.signal(s, handler)
+        if hit[0]:  # objects the interrupt left half-built complain as they go: the process
+            sys.unraisablehook = _quiet  # is ending on the interrupt, and says so once
+
+
+def _quiet(unraisable: object) -> None:
+    """An ``sys.unraisablehook`` that says nothing."""

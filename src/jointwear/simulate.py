@@ -237,7 +237,15 @@ def simulate(
             t_before = float(integ.scal[S_T])
             chunk_start = time.perf_counter()
             steps_before = log.counters[Counter.ACCEPTED] + log.counters[Counter.REJECTED]
-            code, rows = loop.advance(*args, buffer, t_before + chunk, steps_before + budget)
+            try:
+                code, rows = loop.advance(*args, buffer, t_before + chunk, steps_before + budget)
+            except ArithmeticError as error:  # a kernel divided by zero: values at float's edges
+                code, rows = Status.NON_FINITE, 0
+                detail = (
+                    f"{type(error).__name__} in the compiled step loop between t = "
+                    f"{t_before:.6g} and {float(integ.scal[S_T]):.6g} s (the chunk's rows are "
+                    "lost); check the model's sizes and coefficients against their units"
+                )
             status = Status(code)
             blocks.append(buffer[:rows].copy())
             broken = first_non_finite(

@@ -128,12 +128,25 @@ class DistanceDriver(Table):
 # Forces, solver, events ---------------------------------------------------------------------
 
 
+MAX_GRAVITY = 1e7  # [m/s^2] a million g
+
+
 class Gravity(Table):
     """Uniform gravitational acceleration [m/s^2] on every body."""
 
     type: Literal["gravity"] = "gravity"
     name: Name | None = None
     acceleration: Acceleration2
+
+    @model_validator(mode="after")
+    def _plausible(self) -> "Gravity":
+        size = math.hypot(*self.acceleration)
+        if size > MAX_GRAVITY:
+            raise ValueError(
+                f"acceleration: {size:.3g} m/s^2 is beyond any field a machine runs in (at "
+                f"most {MAX_GRAVITY:g} m/s^2, a million g); check its units"
+            )
+        return self
 
 
 class PointForce(Table):
