@@ -44,13 +44,7 @@ def test_studies_benchmark_runs_on_short_cases(tmp_path):
 
 
 def test_contact_laws_benchmark_prints_its_table():
-    args = ["--t-end", "0.01", "--no-figure"]
-    done = subprocess.run(
-        [sys.executable, str(BENCH.with_name("contact_laws.py")), *args],
-        capture_output=True, text=True, timeout=600,
-    )  # fmt: skip
-    assert done.returncode == 0, done.stderr
-    rows = [line for line in done.stdout.splitlines() if line.startswith("| ")][1:]
+    rows = _table_rows("contact_laws.py", "--t-end", "0.01", "--no-figure")
     names = [row.split(" | ")[0].removeprefix("| ") for row in rows]
     assert names == ["Hertz (paper)", "Johnson", "Liu et al.", "elastic foundation, h = 5 mm",
                      "Hertz, lubricated (SAE 30, short bearing)"]  # fmt: skip
@@ -58,13 +52,17 @@ def test_contact_laws_benchmark_prints_its_table():
 
 
 def test_chain_benchmark_prints_its_table():
-    args = ["--sizes", "2", "5", "--repeats", "1"]
-    done = subprocess.run(
-        [sys.executable, str(BENCH.with_name("chain.py")), *args],
-        capture_output=True, text=True, timeout=600,
-    )  # fmt: skip
-    assert done.returncode == 0, done.stderr
-    rows = [line for line in done.stdout.splitlines() if line.startswith("| ")][1:]
+    rows = _table_rows("chain.py", "--sizes", "2", "5", "--repeats", "1")
     assert [row.split(" | ")[0] for row in rows] == ["| 2", "| 5"]
     # 1 s at a row every 1 ms: 1001 rows, whatever the sizes
     assert all(row.split(" | ")[4] == "1001" for row in rows)
+
+
+def _table_rows(script: str, *args: str) -> list[str]:
+    """Run a benchmark script; the rows of the markdown table it prints, header left out."""
+    done = subprocess.run(
+        [sys.executable, str(BENCH.with_name(script)), *args],
+        capture_output=True, text=True, timeout=600,
+    )  # fmt: skip
+    assert done.returncode == 0, done.stderr
+    return [line for line in done.stdout.splitlines() if line.startswith("| ")][1:]
