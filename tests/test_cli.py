@@ -335,7 +335,7 @@ def test_plot_redraws_the_figures(tmp_path):
     run = invoke("run", FOURBAR, "--out", out, "--t-end", 0.05, "--no-figures")
     assert run.exit_code == 0, run.output
     assert not (out / "figures").exists()
-    result = invoke("plot", out, env={"COLUMNS": "500"})
+    result = invoke("plot", out, "--animation", env={"COLUMNS": "500"})
     assert result.exit_code == 0, result.output
     names = ["energy.png", "cycle.png", "fig7_dynamics.png", "fig7d_orbit.png"]
     names += ["fig8_wear_sectors.png", "fig9_wear_polar.png", "fig10_profile.png"]
@@ -344,10 +344,19 @@ def test_plot_redraws_the_figures(tmp_path):
     assert (out / "ideal" / "summary.json").is_file()  # the companion run, for Fig. 7
     for path in expected:
         assert path.stat().st_size > 1000
-    # Again, over the existing figures, without the animation.
-    again = invoke("plot", out, "--no-animation", env={"COLUMNS": "500"})
+    # Again, over the existing figures, without the animation (the default): the GIF stays.
+    again = invoke("plot", out, env={"COLUMNS": "500"})
     assert again.exit_code == 0, again.output
     assert again.stdout.splitlines() == [str(p) for p in expected[:-1]]
+    assert expected[-1].is_file()
+    # A new run without --animation removes it (it would show the earlier run); with, writes it.
+    rerun = invoke("run", FOURBAR, "--out", out, "--t-end", 0.01, "--no-ideal")
+    assert rerun.exit_code == 0, rerun.output
+    assert not expected[-1].exists()
+    assert (out / "figures" / "fig8_wear_sectors.png").is_file()
+    animated = invoke("run", FOURBAR, "--out", out, "--t-end", 0.01, "--no-ideal", "--animation")
+    assert animated.exit_code == 0, animated.output
+    assert expected[-1].stat().st_size > 1000
 
 
 def test_plot_of_a_folder_without_results_exits_2(tmp_path):

@@ -154,3 +154,14 @@ def test_animation_without_crank_or_clearance(pendulum, tmp_path):
     path = save_animation(pendulum, tmp_path / "pendulum.gif", frames=50)
     with Image.open(path) as gif:
         assert gif.n_frames == 11  # the last 0.04 s, rows every 4 ms: fewer than asked
+
+
+def test_figures_drawn_by_the_helper_process_are_those_drawn_here(fourbar, ideal, tmp_path):
+    from jointwear.figures.render import drawing_helper
+
+    alone = save_clearance_figures(fourbar, tmp_path / "alone", ideal)
+    with drawing_helper():
+        helped = save_clearance_figures(fourbar, tmp_path / "helped", ideal)
+    assert [p.name for p in helped] == [p.name for p in alone]
+    for mine, theirs in zip(alone, helped, strict=True):
+        assert mine.read_bytes() == theirs.read_bytes(), mine.name

@@ -8,7 +8,7 @@ from collections.abc import Sequence
 from pathlib import Path
 
 from .interrupts import stop_requests
-from .io import check_folder, claim, remove_folder
+from .io import check_folder, claim, remove, remove_folder
 from .model import load_model
 from .results import IDEAL_FOLDER, Results
 from .results.run_results import CLEARANCE_FILES
@@ -27,6 +27,7 @@ def run(
     *,
     overrides: Sequence[str] = (),
     figures: bool = True,
+    animation: bool = False,
     ideal: bool = True,
     progress: Progress | None = None,
 ) -> Results:
@@ -44,6 +45,9 @@ def run(
         ``dotted.path=value`` settings applied before validation (as ``--set``).
     figures
         Also draw the figures into ``out/figures``.
+    animation
+        With ``figures``, also write the mechanism's animation (``figures/mechanism.gif``,
+        a few seconds more); without, an earlier run's animation is removed.
     ideal
         When the model has clearance joints and its run succeeds, also simulate the same
         mechanism with every joint ideal into ``out/ideal``, for the comparison figures.
@@ -88,9 +92,12 @@ def run(
             return results
         if figures and len(results.timeseries) > 1:
             from .figures.folder import save_figures  # matplotlib only when figures are wanted
+            from .figures.names import ANIMATION
 
             try:
-                save_figures(results, folder / FIGURES, ideal=companion)
+                save_figures(results, folder / FIGURES, ideal=companion, animation=animation)
+                if not animation:  # an earlier run's: it would show another run
+                    remove(folder / FIGURES / ANIMATION)
             except OSError as error:
                 results.summary["not_written"] = {
                     "folder": str(folder / FIGURES),

@@ -10,7 +10,21 @@ import typer
 from rich.markup import escape
 from rich.table import Table
 
-from .common import PLAIN, ModelPath, Overrides, err, fail, one_line, out
+from .common import (
+    PLAIN,
+    T_END,
+    EndTime,
+    ModelPath,
+    Overrides,
+    end_time,
+    err,
+    fail,
+    keep_whole,
+    number,
+    one_line,
+    out,
+    print_table,
+)
 from .progress import CompileNotice, ProgressBar
 
 if TYPE_CHECKING:
@@ -27,9 +41,16 @@ HERTZ_REFERENCE_FORCES = (100.0, 1000.0)  # loads at which `check` shows the Her
 def run(
     model: ModelPath,
     out_dir: Annotated[Path, typer.Option("--out", help="Results folder.")] = Path("results"),
-    t_end: Annotated[float | None, typer.Option("--t-end", help="End time [s].")] = None,
+    t_end: EndTime = None,
     overrides: Overrides = None,
     figures: Annotated[bool, typer.Option("--figures/--no-figures", help="Draw figures.")] = True,
+    animation: Annotated[
+        bool,
+        typer.Option(
+            "--animation/--no-animation",
+            help="Also write the mechanism's animation, figures/mechanism.gif (seconds more).",
+        ),
+    ] = False,
     ideal: Annotated[
         bool,
         typer.Option(
@@ -40,25 +61,25 @@ def run(
 ) -> None:
     """Simulate MODEL and write the results folder (summary, time series, wear, figures)."""
     from ..compiling import compile_notice
+    from ..figures.render import drawing_helper
     from ..model import ModelError
     from ..run import run as run_model
     from ..status import SUCCESS
 
-    settings = list(overrides or [])
-    if t_end is not None:
-        settings.append(f"solver.t_end={t_end!r}")
+    settings = end_time(overrides, t_end)
     bar = ProgressBar(
         "simulating", "t = {task.completed:.4g} / {task.total:.4g} s", PROGRESS_AFTER_S
     )
     compiling = CompileNotice()
     try:
-        with compile_notice(compiling.started, compiling):
+        with compile_notice(compiling.started, compiling), drawing_helper(figures):
             results = run_model(
-                model, out_dir, overrides=settings, figures=figures, ideal=ideal,
+                model, out_dir, overrides=settings, figures=figures, animation=animation,
+                ideal=ideal,
                 progress=compiling.then(bar),
             )  # fmt: skip
     except ModelError as error:
-        raise fail(error) from None
+        raise fail(error, {T_END: "--t-end"} if t_end is not None else None) from None
     except KeyboardInterrupt:
         if compiling.active:
             raise compiling.interrupted() from None
@@ -196,12 +217,12 @@ def check(model: ModelPath, overrides: Overrides = None) -> None:
     for i, body in enumerate(parsed.bodies):
         x, y, phi = assembly.y0[3 * i : 3 * i + 3]
         vx, vy, w = assembly.y0[n + 3 * i : n + 3 * i + 3]
-        table.add_row(body.name, *(f"{v:.6g}" for v in (x, y, math.degrees(phi), vx, vy, w)))
-    out.print(table)
+        table.add_row(body.name, *(number(v) for v in (x, y, math.degrees(phi), vx, vy, w)))
+    print_table(keep_whole(table, *range(1, 7)))
     for joint in parsed.clearance_joints:
-        out.print(_clearance_table(joint.name, joint.clearance))
+        print_table(_clearance_table(joint.name, joint.clearance))
     for joint in parsed.slider_joints:
-        out.print(_slider_table(parsed, joint, assembly.y0))
+        print_table(_slider_table(parsed, joint, assembly.y0))
 
 
 def _clearance_table(name: str, clearance: Clearance) -> Table:
@@ -282,9 +303,9 @@ def _law_rows(clearance: ContactKeys, table: Table) -> list[tuple]:
 
 def _filled(table: Table, rows: list[tuple]) -> Table:
     for quantity, value, unit in rows:
-        shown = "-" if value is None else value if isinstance(value, str) else f"{value:.6g}"
-        table.add_row(escape(quantity), shown, escape(unit))
-    return table
+        shown = "-" if value is None else value if isinstance(value, str) else number(value)
+        table.add_row(escape(quantity), escape(shown), escape(unit))
+    return keep_whole(table, 1)
 
 
 OTHER_FOLDERS = {"life.csv": "life-run", "sweep.csv": "sweep"}  # what marks them
@@ -293,8 +314,12 @@ OTHER_FOLDERS = {"life.csv": "life-run", "sweep.csv": "sweep"}  # what marks the
 def plot(
     folder: Annotated[Path, typer.Argument(help="Results folder.")],
     animation: Annotated[
-        bool, typer.Option("--animation/--no-animation", help="Also write the GIF.")
-    ] = True,
+        bool,
+        typer.Option(
+            "--animation/--no-animation",
+            help="Also write the mechanism's animation, figures/mechanism.gif (seconds more).",
+        ),
+    ] = False,
 ) -> None:
     """Draw (again) the figures of a results folder into FOLDER/figures."""
     kind = next((kind for name, kind in OTHER_FOLDERS.items() if (folder / name).is_file()), None)
@@ -304,6 +329,14 @@ def plot(
     if not (folder / "summary.json").is_file():
         err.print(f"{folder}: not a results folder (no summary.json)", **PLAIN)
         raise typer.Exit(code=2)
+    from ..figures.render import drawing_helper
+
+    with drawing_helper():
+        _redraw(folder, animation)
+
+
+def _redraw(folder: Path, animation: bool) -> None:
+    """Draw the figures of the run folder ``folder`` (``plot``)."""
     from ..figures.folder import save_figures  # matplotlib only for this command
     from ..model import ModelError
     from ..results import IDEAL_FOLDER, load_results

@@ -8,6 +8,7 @@ counter-clockwise in that surface's body frame from the body's x axis, as in the
 from __future__ import annotations
 
 import math
+from functools import partial
 from pathlib import Path
 
 import numpy as np
@@ -19,7 +20,7 @@ from matplotlib.figure import Figure  # figures without pyplot: no global backen
 from ..model.sections import RevoluteJoint
 from ..results import Results
 from ..results.clearance import UM
-from .files import save_png
+from .files import Drawings, save_pngs
 from .names import CLEARANCE_FIGURES
 from .run import crank_driver
 
@@ -343,22 +344,23 @@ def plot_wear_profile(results: Results) -> Figure:
     return fig
 
 
+def clearance_drawings(results: Results, ideal: Results | None = None) -> Drawings:
+    """The clearance figures (paper Figs. 7-10) by file name; none without clearance joints.
+
+    ``ideal``: the same mechanism with ideal joints, for the comparison of Fig. 7 (a)-(c).
+    """
+    if not _clearance_joints(results):
+        return {}
+    draws = (
+        partial(plot_dynamics, results, ideal),
+        *(partial(d, results) for d in (plot_orbit, plot_wear_sectors, plot_wear_polar)),
+        partial(plot_wear_profile, results),
+    )
+    return dict(zip(CLEARANCE_FIGURES, draws, strict=True))
+
+
 def save_clearance_figures(
     results: Results, folder: str | Path, ideal: Results | None = None
 ) -> list[Path]:
-    """Write the clearance figures (paper Figs. 7-10) into ``folder`` as PNG; return the paths.
-
-    Nothing is written when the model has no clearance joints. ``ideal``: the same mechanism
-    with ideal joints, for the comparison of Fig. 7 (a)-(c).
-    """
-    if not _clearance_joints(results):
-        return []
-    path = Path(folder)
-    figures = dict(zip(CLEARANCE_FIGURES, (
-        lambda r: plot_dynamics(r, ideal),
-        plot_orbit,
-        plot_wear_sectors,
-        plot_wear_polar,
-        plot_wear_profile,
-    ), strict=True))  # fmt: skip
-    return [save_png(draw(results), path / f"{name}.png") for name, draw in figures.items()]
+    """Write the clearance figures into ``folder`` as PNG; return the paths."""
+    return save_pngs(clearance_drawings(results, ideal), Path(folder))

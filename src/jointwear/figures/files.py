@@ -1,15 +1,36 @@
-"""Saving a figure under the file rule of ``jointwear.io``."""
+"""Saving figures under the file rule of ``jointwear.io``."""
 
 from __future__ import annotations
 
+from collections.abc import Callable, Mapping
+from functools import partial
 from pathlib import Path
 
 from matplotlib.figure import Figure
 
 from ..io import make_folder, write_atomic
+from .render import DPI, render_pngs
+
+Drawings = Mapping[str, Callable[[], Figure]]  # file name without .png -> draws that figure
 
 
-def save_png(figure: Figure, path: Path, dpi: int = 150) -> Path:
+def save_png(figure: Figure, path: Path, dpi: int = DPI) -> Path:
     """Write ``figure`` to ``path`` as PNG, whole or not at all; return the path."""
     make_folder(path.parent)
     return write_atomic(path, lambda temporary: figure.savefig(temporary, format="png", dpi=dpi))
+
+
+def save_pngs(drawings: Drawings, folder: Path, dpi: int = DPI) -> list[Path]:
+    """Draw each figure (side by side where possible) and write it as ``folder/<name>.png``.
+
+    Returns the paths written. Nothing is written unless every figure could be drawn (and no
+    folder made for none).
+    """
+    if not drawings:
+        return []
+    images = render_pngs(list(drawings.values()), dpi)
+    make_folder(folder)
+    return [
+        write_atomic(folder / f"{name}.png", partial(Path.write_bytes, data=image))
+        for name, image in zip(drawings, images, strict=True)
+    ]

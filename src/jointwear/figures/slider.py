@@ -10,6 +10,7 @@ Wear positions run along each surface from its middle, in its body's frame.
 from __future__ import annotations
 
 import math
+from functools import partial
 from pathlib import Path
 from typing import NamedTuple
 
@@ -23,7 +24,7 @@ from ..model.sections import RevoluteJoint, TranslationalJoint
 from ..model.slide_clearance import SlideClearance
 from ..results import Results
 from ..results.clearance import UM
-from .files import save_png
+from .files import Drawings, save_pngs
 from .names import SLIDER_FIGURES
 from .run import crank_driver
 
@@ -279,16 +280,14 @@ def plot_guide_wear(results: Results) -> Figure:
     return fig
 
 
-def save_slider_figures(results: Results, folder: str | Path) -> list[Path]:
-    """Write the slider figures into ``folder`` as PNG; return the paths.
-
-    Nothing is written when the model has no translational clearance joints.
-    """
+def slider_drawings(results: Results) -> Drawings:
+    """The slider figures by file name; none without translational clearance joints."""
     if not results.model.slider_joints:
-        return []
-    path = Path(folder)
+        return {}
     draws = (plot_slider_motion, plot_corner_forces, plot_guide_wear)
-    return [
-        save_png(draw(results), path / f"{name}.png")
-        for name, draw in zip(SLIDER_FIGURES, draws, strict=True)
-    ]
+    return {name: partial(draw, results) for name, draw in zip(SLIDER_FIGURES, draws, strict=True)}
+
+
+def save_slider_figures(results: Results, folder: str | Path) -> list[Path]:
+    """Write the slider figures into ``folder`` as PNG; return the paths (none without sliders)."""
+    return save_pngs(slider_drawings(results), Path(folder))

@@ -1,0 +1,112 @@
+"""Figures to PNG bytes, part of them drawn by a helper process on another core.
+
+Drawing is matplotlib's layout and text work, a few tenths of a second per figure, so a run's
+seven or eight figures take seconds one after another. Within ``drawing_helper``, a second
+Python process is started at once (spawned, not forked: the run's threads make a fork unsafe);
+it imports matplotlib while the run computes, and then draws every other figure
+``render_pngs`` is given. Writing the files stays with the caller, so the file rule of
+``jointwear.io`` holds in one process.
+"""
+
+from __future__ import annotations
+
+import multiprocessing
+import os
+import signal
+import threading
+from collections.abc import Callable, Iterator, Sequence
+from concurrent.futures import Future, ProcessPoolExecutor
+from concurrent.futures.process import BrokenProcessPool
+from contextlib import contextmanager
+from io import BytesIO
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
+DPI = 150  # resolution of the PNGs [dots per inch]
+STOP_SIGNALS = {signal.SIGINT, signal.SIGTERM}
+
+_helper: ProcessPoolExecutor | None = None  # the open drawing_helper's process
+
+
+@contextmanager
+def drawing_helper(wanted: bool = True) -> Iterator[None]:
+    """Within the block, a second process (started now) draws part of the figures.
+
+    Nothing is started unless ``wanted``, in the main thread, on a POSIX machine with two
+    cores or more. The helper never acts on Ctrl-C or SIGTERM (this process does, as
+    ``jointwear.interrupts`` says), and ends with the block. For the command line: a spawned
+    process imports the ``__main__`` module of a script not guarded by
+    ``if __name__ == "__main__"``.
+    """
+    global _helper
+    main = threading.current_thread() is threading.main_thread()  # signals are set there only
+    posix = hasattr(signal, "pthread_sigmask")
+    if not (wanted and main and posix) or _helper is not None or (os.cpu_count() or 1) < 2:
+        yield
+        return
+    with _signals_ignored_by_children():
+        helper = ProcessPoolExecutor(
+            1, mp_context=multiprocessing.get_context("spawn"), initializer=_import_figures
+        )
+        helper.submit(int)  # starts the process now, while the caller computes
+    _helper = helper
+    try:
+        yield
+    finally:
+        _helper = None
+        helper.shutdown(wait=False, cancel_futures=True)
+
+
+@contextmanager
+def _signals_ignored_by_children() -> Iterator[None]:
+    """Processes started in the block ignore Ctrl-C and SIGTERM from birth; none is lost here.
+
+    A child keeps an ignored disposition across ``exec``. The signals are blocked meanwhile,
+    so one that arrives is kept pending (Linux does not discard a blocked signal on arrival,
+    even while ignored) and delivered to this process's handlers when the block ends.
+    """
+    mask = signal.pthread_sigmask(signal.SIG_BLOCK, STOP_SIGNALS)
+    handlers = {s: signal.signal(s, signal.SIG_IGN) for s in STOP_SIGNALS}
+    try:
+        yield
+    finally:
+        for s, handler in handlers.items():
+            signal.signal(s, handler)
+        signal.pthread_sigmask(signal.SIG_SETMASK, mask)
+
+
+def render_pngs(drawings: Sequence[Callable[[], Figure]], dpi: int = DPI) -> list[bytes]:
+    """Call each drawing and return its figure as PNG bytes, in the order given.
+
+    Within ``drawing_helper``, every other drawing is drawn by the helper process, which
+    receives it pickled; an exception a drawing raises there is raised here as it was.
+    """
+    helper = _helper
+    if helper is None or len(drawings) < 2:
+        return [_png(draw, dpi) for draw in drawings]
+    sent: dict[int, Future[bytes]] = {}
+    try:
+        for i in range(1, len(drawings), 2):
+            sent[i] = helper.submit(_png, drawings[i], dpi)
+    except BrokenProcessPool:  # the helper is gone (killed): drawn here instead
+        sent.clear()
+    images = {i: _png(draw, dpi) for i, draw in enumerate(drawings) if i not in sent}
+    for i, future in sent.items():
+        try:
+            images[i] = future.result()
+        except BrokenProcessPool:
+            images[i] = _png(drawings[i], dpi)
+    return [images[i] for i in range(len(drawings))]
+
+
+def _png(draw: Callable[[], Figure], dpi: int) -> bytes:
+    buffer = BytesIO()
+    draw().savefig(buffer, format="png", dpi=dpi)
+    return buffer.getvalue()
+
+
+def _import_figures() -> None:
+    """In the helper: import the figure modules before the first figure is asked for."""
+    from . import folder  # noqa: F401
