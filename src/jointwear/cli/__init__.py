@@ -5,13 +5,37 @@ solver failure; the results folder holds what was computed), 2 invalid input (on
 problem on stderr, no traceback), 3 results that could not be written where asked (the
 message says where they are), 130 interrupted outside a run (before it started, or after
 its results were saved).
+
+Help texts are plain text: ``rich_markup_mode=None`` keeps typer from reading them as rich
+markup, which took "[s]" in "End time [s]." for a style and dropped it.
 """
+
+from typing import Annotated
 
 import typer
 
+from .._version import __version__
 from .run_commands import check, plot, run
 from .study_commands import life, sweep
 
-app = typer.Typer(add_completion=False, no_args_is_help=True, help=__doc__.splitlines()[0])
+app = typer.Typer(no_args_is_help=True, help=__doc__.splitlines()[0], rich_markup_mode=None)
 for command in (run, check, plot, sweep, life):
     app.command()(command)
+
+
+def _print_version(asked: bool) -> None:
+    if asked:
+        typer.echo(f"jointwear {__version__}")
+        raise typer.Exit
+
+
+@app.callback()
+def _options(
+    version: Annotated[
+        bool,
+        typer.Option(
+            "--version", callback=_print_version, is_eager=True, help="Print the version and exit."
+        ),
+    ] = False,
+) -> None:
+    """The options before a command: --version, and shell completion."""

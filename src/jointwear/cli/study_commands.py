@@ -7,7 +7,7 @@ from typing import Annotated
 
 import typer
 
-from .common import PLAIN, ModelPath, Overrides, err, fail, one_line, out
+from .common import PLAIN, T_END, EndTime, ModelPath, Overrides, end_time, err, fail, one_line, out
 from .progress import CompileNotice, ProgressBar, SweepProgress
 
 
@@ -25,7 +25,7 @@ def sweep(
         typer.Option("--file", help="Sweep file: TOML with [vary] (path = [values]) and [set]."),
     ] = None,
     overrides: Overrides = None,
-    t_end: Annotated[float | None, typer.Option("--t-end", help="End time [s].")] = None,
+    t_end: EndTime = None,
     cycles: Annotated[
         int | None, typer.Option("--cycles", help="Long-life wear runs of N cycles per case.")
     ] = None,
@@ -49,12 +49,12 @@ def sweep(
     from ..studies.sweep.cases import make_plan
     from ..studies.sweep.study import sweep as run_sweep
 
-    settings = list(overrides or [])
-    if t_end is not None:
-        settings.append(f"solver.t_end={t_end!r}")
     bar = SweepProgress()
+    named: dict[str, str] = {}  # solver.t_end's problems are --t-end's, unless it is varied
     try:
-        plan = make_plan(vary or [], sweep_file, settings)
+        plan = make_plan(vary or [], sweep_file, end_time(overrides, t_end))
+        if t_end is not None and T_END not in plan.vary:
+            named = {T_END: "--t-end"}
         results = run_sweep(
             model,
             out_dir,
@@ -67,7 +67,7 @@ def sweep(
             progress=bar,
         )
     except ModelError as error:
-        raise fail(error) from None
+        raise fail(error, named) from None
     except OSError as error:
         err.print(
             f"could not write in {out_dir}: {one_line(str(error))}; the finished cases are "

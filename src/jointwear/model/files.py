@@ -4,8 +4,12 @@ A file with ``extends = "other.toml"`` (a path relative to the file) is that mod
 values under its ``[set]`` table changed, each dotted key addressing one value as in
 ``jointwear run --set`` (array items by name). Beside them it may give its own ``name`` and
 ``description``; the name defaults to the file's stem.
+
+A results folder stands for the model it was run with: its ``model.json``, which every run
+writes (the resolved model, values in SI).
 """
 
+import json
 import re
 import tomllib
 from pathlib import Path
@@ -16,18 +20,59 @@ from .overrides import apply_changes
 EXTENDING_KEYS = ("extends", "set", "name", "description")
 MAX_FILE_BYTES = 10**7  # a model file larger than this is not one
 MAX_KEY_DEPTH = 200  # dotted parts in one key: far more than a model has
+SAVED_MODEL = "model.json"  # in a results folder: the model it was run with
 
 
 def read_model_data(path: Path) -> dict:
     """The model's tables from the TOML file at `path`, with its ``extends`` resolved.
 
+    `path` may also be a results folder: the tables are then its ``model.json``.
+
     Raises
     ------
     ModelError
         If a file cannot be read or is not valid TOML, or an extending file is malformed or
-        extends itself through a chain of files.
+        extends itself through a chain of files; if a folder has no readable model.json.
     """
-    return _resolve(Path(path), ())
+    path = Path(path)
+    if path.is_dir():
+        return read_saved_model(path)
+    return _resolve(path, ())
+
+
+def read_saved_model(folder: Path) -> dict:
+    """The tables of the model a results folder was run with (its ``model.json``).
+
+    Raises
+    ------
+    ModelError
+        If the folder has no ``model.json``, or it cannot be read as a JSON table.
+    """
+    path = folder / SAVED_MODEL
+    if not path.is_file():
+        raise ModelError(
+            [
+                f"{folder}: not a file, nor a results folder (no {SAVED_MODEL} in it); give a "
+                "TOML model file or the folder of a run"
+            ]
+        )
+    damaged = "the folder is damaged: give the model file, or run it again"
+    try:
+        if path.stat().st_size > MAX_FILE_BYTES:
+            raise ModelError([f"{path}: larger than {MAX_FILE_BYTES // 10**6} MB; {damaged}"])
+        data = json.loads(path.read_bytes().decode())
+    except OSError as error:
+        raise ModelError([f"{path}: cannot read the file; {error.strerror}"]) from None
+    except UnicodeDecodeError:
+        raise ModelError([f"{path}: not UTF-8 text; {damaged}"]) from None
+    except RecursionError:
+        raise ModelError([f"{path}: {TOO_DEEP}"]) from None
+    except ValueError as error:  # invalid JSON, or a number of thousands of digits
+        reason = " ".join(str(error).split())[:200]
+        raise ModelError([f"{path}: not valid JSON ({reason}); {damaged}"]) from None
+    if not isinstance(data, dict):
+        raise ModelError([f"{path}: not a JSON table of a model; {damaged}"])
+    return data
 
 
 def _resolve(path: Path, chain: tuple[Path, ...]) -> dict:

@@ -133,7 +133,8 @@ def load_model(path: str | PathLike, overrides: Sequence[str] = ()) -> Model:
     """Read a TOML model file, apply dotted ``path=value`` overrides, and validate it.
 
     The model name defaults to the file name without its suffix. A file may extend another
-    (``model.files``).
+    (``model.files``). `path` may also be a results folder: its ``model.json``, the model it
+    was run with.
 
     Raises
     ------

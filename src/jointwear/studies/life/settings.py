@@ -105,12 +105,16 @@ def cycle_driver(model: Model) -> tuple[str, float]:
         has a period.
     """
     periods: dict[str, float] = {}
+    rates: dict[str, float] = {}  # label -> the speed or angular frequency behind its period
     drivers: list[str] = []  # those with a period, in file order
     problems = []
     functions = [(f"drivers[{i}]", d.function, d.type, d.name) for i, d in enumerate(model.drivers)]
+    named = {label: f"{label} '{name}'" for label, _, _, name in functions}  # for messages
     for i, load in enumerate(model.forces):
         values = load.force if load.type == "point_force" else (getattr(load, "torque", 0.0),)
-        functions += [(f"forces[{i}]", value, "load", None) for value in values]
+        label = f"forces[{i}]"
+        named[label] = label if load.name is None else f"{label} '{load.name}'"
+        functions += [(label, value, "load", None) for value in values]
     for label, function, kind, driver in functions:
         repeat = period(function, kind)
         if repeat is None:
@@ -121,6 +125,7 @@ def cycle_driver(model: Model) -> tuple[str, float]:
             )
         elif repeat > 0.0:
             periods[label] = repeat
+            rates[label] = 2.0 * math.pi / repeat
             drivers += [driver] if driver else []
     if not problems and not drivers:
         problems.append(
@@ -129,17 +134,57 @@ def cycle_driver(model: Model) -> tuple[str, float]:
         )
     if problems:
         raise ModelError(problems)
-    cycle = max(periods.values())
+    longest = max(periods, key=periods.__getitem__)
+    cycle = periods[longest]
     for label, own in periods.items():
-        ratio = cycle / own
-        if abs(ratio - round(ratio)) > PERIOD_RTOL * ratio:
+        if not divides(own, cycle):
+            shown, whole = _apart(own, cycle)
+            hints = [
+                _rpm_hint(named[name], rates[name]) for name in dict.fromkeys((label, longest))
+            ]
             problems.append(
-                f"{label}: its period {own:.6g} s does not divide the cycle {cycle:.6g} s "
-                "of the longest period; a life run needs one cycle for the whole model"
+                f"{label}: its period {shown} s does not divide the cycle {whole} s of "
+                f"{named[longest]} (the longest period); a life run needs one cycle for the "
+                "whole model" + "".join(f"; {hint}" for hint in hints if hint)
             )
     if problems:
         raise ModelError(problems)
     return drivers[0], cycle
+
+
+def divides(period: float, cycle: float) -> bool:
+    """Whether ``cycle`` is a whole number of ``period``s, to ``PERIOD_RTOL`` of the ratio.
+
+    Two speeds meant alike but written differently ("5000 rpm", 523.5987755982989 rad/s)
+    give periods a rounding apart: they divide each other.
+    """
+    ratio = cycle / period
+    return round(ratio) >= 1 and abs(ratio - round(ratio)) <= PERIOD_RTOL * ratio
+
+
+def _apart(first: float, second: float) -> tuple[str, str]:
+    """Two numbers shown with the fewest digits (at least 6) that tell them apart."""
+    for digits in range(6, 18):
+        shown = f"{first:.{digits}g}", f"{second:.{digits}g}"
+        if shown[0] != shown[1]:
+            break
+    return shown
+
+
+ROUND_RPM_RTOL = 1e-6  # a speed this close to a round rpm value was likely meant as that
+
+
+def _rpm_hint(label: str, rate: float) -> str:
+    """A hint for a speed [rad/s] that is a round rpm value but for its last digits, or ""."""
+    rpm = rate * 60.0 / (2.0 * math.pi)
+    meant = float(f"{rpm:.4g}")  # four significant digits: "5000", "1500", "0.5"
+    off = abs(rpm - meant)
+    if not PERIOD_RTOL * meant < off <= ROUND_RPM_RTOL * meant:  # exact, or not round
+        return ""
+    return (
+        f"{label} runs at {rpm:.12g} rpm: if {meant:g} rpm is meant, give it as "
+        f"'{meant:g} rpm', exact where a number in rad/s is rounded"
+    )
 
 
 def with_feedback(model: Model, feedback: bool | None) -> Model:
