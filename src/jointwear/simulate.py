@@ -39,6 +39,13 @@ from .results.clearance import (
     snapshot_table,
     wear_table,
 )
+from .results.cycles import (
+    JOURNAL_PEAKS,
+    SLIDER_PEAKS,
+    CycleWindows,
+    lead_with_steady_state,
+    settling,
+)
 from .results.run_state import RunState
 from .status import status_message
 from .system import (
@@ -223,6 +230,11 @@ def simulate(
             sliders.contact_on[:] = initial.slider_contact_on
             sliders.impact_speed[:] = initial.slider_impact_speed
 
+        settle = settling(model, continuing=initial is not None)
+        windows = CycleWindows(
+            t0, t_end, settle, (element_logs.journal.totals, element_logs.slider.totals),
+            (JOURNAL_PEAKS, SLIDER_PEAKS),
+        )  # fmt: skip
         energy = EnergyMonitor(model, columns)
         wall_start = time.perf_counter()
         status = Status.RUNNING
@@ -238,7 +250,8 @@ def simulate(
             chunk_start = time.perf_counter()
             steps_before = log.counters[Counter.ACCEPTED] + log.counters[Counter.REJECTED]
             try:
-                code, rows = loop.advance(*args, buffer, t_before + chunk, steps_before + budget)
+                t_stop = min(t_before + chunk, windows.next_end)
+                code, rows = loop.advance(*args, buffer, t_stop, steps_before + budget)
             except ArithmeticError as error:  # a kernel divided by zero: values at float's edges
                 code, rows = Status.NON_FINITE, 0
                 detail = (
@@ -273,6 +286,7 @@ def simulate(
             )  # fmt: skip
             log.counters[Counter.IMPACTS] = 0
             t_now = float(integ.scal[S_T])
+            windows.passed(t_now)
             if progress is not None:
                 progress(t_now - t0, solver.t_end)
             if stop_requested[0] and status == Status.RUNNING:
@@ -289,6 +303,7 @@ def simulate(
         status, detail = Status.LOCK_UP, lock.message()
     wall = time.perf_counter() - wall_start
     t_reached = float(integ.scal[S_T])
+    windows.finish(t_reached)
     final = RunState(
         time=t_reached,
         y=integ.y.copy(),
@@ -336,14 +351,16 @@ def simulate(
         "energy": energy.summary(),
     }
     if model.has_clearance:
-        duration = t_reached - t0
-        journal_figures = joint_summaries(
-            model, element_logs.journal.totals, journals.wear, duration
+        whole = (element_logs.journal.totals, element_logs.slider.totals), t_reached - t0
+        steady = windows.steady()
+        summary["steady_state"] = settle.summary(t0, t_reached, steady[2] if steady else 0)
+        summary["clearance_joints"] = lead_with_steady_state(
+            _joint_figures(model, journals.wear, sliders.wear, *whole),
+            None
+            if steady is None
+            else _joint_figures(model, journals.wear, sliders.wear, *steady[:2]),
         )
-        slider_figures = slider_results.joint_summaries(
-            model, element_logs.slider.totals, sliders.wear, duration
-        )
-        summary["clearance_joints"] = journal_figures | slider_figures
+        tables["cycles"] = windows.table(model)
     return Results(
         model=model,
         timeseries=pd.DataFrame(data, columns=columns),
@@ -352,6 +369,18 @@ def simulate(
         final=final,
         **tables,
     )
+
+
+def _joint_figures(
+    model: Model,
+    journal_wear: np.ndarray,
+    slider_wear: np.ndarray,
+    totals: tuple[np.ndarray, np.ndarray],
+    duration: float,
+) -> dict[str, dict]:
+    """Per clearance joint, its summary figures from ``totals`` gathered over ``duration`` [s]."""
+    journals = joint_summaries(model, totals[0], journal_wear, duration)
+    return journals | slider_results.joint_summaries(model, totals[1], slider_wear, duration)
 
 
 def _accumulated(

@@ -94,8 +94,17 @@ def run(
         f"{stats['accepted_steps']} steps, {stats['simulation_wall_s']:.3g} s wall",
         soft_wrap=True,
     )
+    span = results.summary.get("steady_state", {})
+    steady = span.get("from_s") is not None and span["settle_s"] > 0.0
+    if steady:
+        out.print(
+            f"steady state from t = {span['from_s']:.4g} s (settling: {span['settling']}); "
+            "the whole run's figures are under whole_run in summary.json",
+            soft_wrap=True,
+            highlight=False,
+        )
     for name, joint in results.summary.get("clearance_joints", {}).items():
-        out.print(_joint_line(name, joint), soft_wrap=True, highlight=False)
+        out.print(_joint_line(name, joint, steady), soft_wrap=True, highlight=False)
         for line in _range_warnings(name, joint):
             err.print(line, soft_wrap=True, highlight=False, markup=False)
     moved = results.summary.get("not_written")
@@ -137,8 +146,8 @@ def _range_warnings(name: str, joint: dict) -> list[str]:
     ]
 
 
-def _joint_line(name: str, joint: dict) -> str:
-    """One line of a clearance joint's headline figures."""
+def _joint_line(name: str, joint: dict, steady: bool) -> str:
+    """One line of a clearance joint's headline figures (``steady``: in the steady state)."""
     revolute = joint.get("type", "revolute") == "revolute"
     depth = "{0} {1:.4g} µm{2}"
     wear = [
@@ -148,10 +157,16 @@ def _joint_line(name: str, joint: dict) -> str:
         for surface in (("journal", "bearing") if revolute else SLIDER_SURFACES)
         if f"max_wear_depth_{surface}_m" in joint  # an unbounded guide keeps no wear map
     ]
+    whole = joint.get("whole_run", {})
+    start_up = (
+        f" (whole run {whole['max_contact_force_n'] / 1e3:.4g} kN, {whole['impacts']} impacts)"
+        if steady and whole
+        else ""
+    )
     return (
         f"{name}: max contact force {joint['max_contact_force_n'] / 1e3:.4g} kN, in contact "
-        f"{100 * joint['contact_time_fraction']:.4g} % of the time, {joint['impacts']} impacts; "
-        f"max wear depth {', '.join(wear)}"
+        f"{100 * joint['contact_time_fraction']:.4g} % of the time, {joint['impacts']} impacts"
+        f"{start_up}; max wear depth {', '.join(wear)}"
     )
 
 

@@ -5,6 +5,7 @@ is a constant quantity or a polynomial or harmonic table of it.
 """
 
 import math
+from collections.abc import Sequence
 from typing import Annotated, ClassVar, Generic, Literal, TypeVar
 
 from pydantic import BaseModel, Discriminator, Field, Tag
@@ -84,3 +85,17 @@ def period(function: object, kind: str) -> float | None:
             return 0.0
         return 2.0 * math.pi / abs(function.angular_frequency)
     return 0.0  # a constant value
+
+
+def longest_period(drivers: Sequence, forces: Sequence) -> float | None:
+    """The longest period [s] of the drivers' and loads' functions; None if none repeats.
+
+    The mechanism's cycle for per-cycle figures: functions that never repeat are passed
+    over (a life run, which needs one cycle for everything, checks more strictly).
+    """
+    functions = [(d.function, d.type) for d in drivers]
+    for load in forces:
+        values = load.force if load.type == "point_force" else (getattr(load, "torque", 0.0),)
+        functions += [(value, "load") for value in values]
+    periods = [period(function, kind) for function, kind in functions]
+    return max((p for p in periods if p), default=None)

@@ -13,6 +13,7 @@ from pydantic import Field, ValidationError, model_validator
 
 from .errors import TOO_DEEP, ModelError, from_validation_error
 from .files import read_model_data
+from .functions import longest_period
 from .overrides import apply_overrides
 from .references import reference_problems
 from .sections import (
@@ -52,6 +53,29 @@ class Model(Table):
         if problems:
             raise ModelError(problems)
         return self
+
+    @model_validator(mode="after")
+    def _steady_state_in_the_run(self) -> "Model":
+        cycles, t_end = self.solver.settle_cycles, self.solver.t_end
+        if cycles is None:
+            return self
+        if self.cycle is None:
+            raise ModelError([
+                "solver.settle_cycles: the model has no periodic driver or load whose cycles "
+                "could be counted; give solver.settle_time in seconds instead"
+            ])  # fmt: skip
+        if cycles * self.cycle >= t_end:
+            raise ModelError([
+                f"solver.settle_cycles: {cycles:g} cycles of {self.cycle:.6g} s leave nothing "
+                f"of the run (t_end {t_end:g} s) for the steady state; need fewer than "
+                f"{t_end / self.cycle:.6g}"
+            ])  # fmt: skip
+        return self
+
+    @property
+    def cycle(self) -> float | None:
+        """The mechanism's cycle [s]: the longest period of its drivers and loads, if any."""
+        return longest_period(self.drivers, self.forces)
 
     @property
     def body_names(self) -> tuple[str, ...]:

@@ -225,6 +225,8 @@ class Solver(Table):
     t_end: SolverTime = 1.0
     max_steps: Annotated[int, Strict(), Gt(0), Le(2**62)] = 10_000_000
     assembly_tolerance: Annotated[Length, Gt(0)] = 1e-10
+    settle_cycles: Annotated[Number, Ge(0), Le(1e15)] | None = None  # default: see settling
+    settle_time: Annotated[Time, Ge(0), Le(1e12)] | None = None
 
     @model_validator(mode="after")
     def _steps_in_order(self) -> "Solver":
@@ -238,6 +240,16 @@ class Solver(Table):
             raise ValueError(
                 f"t_end / wear_snapshot_interval asks for {snapshots:.3g} wear snapshots; at "
                 f"most {MAX_WEAR_SNAPSHOTS} are allowed; raise wear_snapshot_interval"
+            )
+        if self.settle_cycles is not None and self.settle_time is not None:
+            raise ValueError(
+                "settle_cycles and settle_time both given; give one: the start-up left out "
+                "of the steady-state figures, in driver cycles or in seconds"
+            )
+        if self.settle_time is not None and self.settle_time >= self.t_end:
+            raise ValueError(
+                f"settle_time {self.settle_time:g} s leaves nothing of the run (t_end "
+                f"{self.t_end:g} s) for the steady state; need settle_time < t_end"
             )
         rows = self.t_end / self.output_interval
         if rows > MAX_OUTPUT_ROWS:

@@ -134,7 +134,9 @@ def joint_summaries(
             "type": "revolute",
             "radial_clearance_m": c.radial_clearance,
             "max_contact_force_n": row[cs.T_MAX_FN],
-            "contact_time_fraction": row[cs.T_CONTACT_TIME] / duration if duration else 0.0,
+            "contact_time_fraction": min(1.0, row[cs.T_CONTACT_TIME] / duration)
+            if duration
+            else 0.0,
             "impacts": int(row[cs.T_IMPACTS]),
             "max_penetration_m": row[cs.T_MAX_DELTA],
             "worn_volume_m3": row[cs.T_WORN_VOLUME],

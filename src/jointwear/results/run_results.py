@@ -4,7 +4,8 @@ A results folder holds ``summary.json`` (status, settings, version, run statisti
 per clearance joint its contact and wear figures), ``timeseries.csv`` and
 ``timeseries.parquet`` (the same table), ``events.csv`` and ``model.json`` (the resolved
 model, SI), so that it describes itself; with clearance joints also ``wear.csv`` (final
-profiles), ``wear_snapshots.csv`` and ``impacts.csv`` (``results.clearance``).
+profiles), ``wear_snapshots.csv``, ``impacts.csv`` (``results.clearance``) and
+``cycles.csv`` (``results.cycles``).
 ``load_results`` reads it back.
 """
 
@@ -31,7 +32,8 @@ IDEAL_FOLDER = "ideal"  # subfolder with the all-ideal companion run of a cleara
 class Results:
     """Outcome of ``simulate``: time series, event log and summary of one model.
 
-    ``wear``, ``wear_snapshots`` and ``impacts`` are empty without clearance joints.
+    ``wear``, ``wear_snapshots``, ``impacts`` and ``cycles`` are empty without clearance
+    joints.
     """
 
     model: Model
@@ -41,6 +43,7 @@ class Results:
     wear: pd.DataFrame = field(default_factory=pd.DataFrame)
     wear_snapshots: pd.DataFrame = field(default_factory=pd.DataFrame)
     impacts: pd.DataFrame = field(default_factory=pd.DataFrame)
+    cycles: pd.DataFrame = field(default_factory=pd.DataFrame)  # results.cycles.CYCLE_COLUMNS
     final: RunState | None = None  # where the run ended (None once loaded from a folder)
 
     @property
@@ -78,7 +81,7 @@ class Results:
         return path
 
 
-_CLEARANCE_TABLES = ("wear", "wear_snapshots", "impacts")
+_CLEARANCE_TABLES = ("wear", "wear_snapshots", "impacts", "cycles")
 CLEARANCE_FILES = tuple(f"{name}.csv" for name in _CLEARANCE_TABLES)
 FILES = (  # what a results folder may hold, clearance tables last, for ``jointwear.io.claim``
     "summary.json", "model.json", "timeseries.csv", "timeseries.parquet", "events.csv",
@@ -109,6 +112,7 @@ def load_results(folder: str | os.PathLike) -> Results:
         tables = {
             name: pd.read_csv(path / f"{name}.csv", dtype=_FLOAT_COLUMNS)
             for name in _CLEARANCE_TABLES
+            if name != "cycles" or (path / "cycles.csv").is_file()  # not before version 0.2
         }
     return Results(
         model=parse_model(model_data),

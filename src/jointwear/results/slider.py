@@ -79,7 +79,9 @@ def joint_summaries(
             "type": "translational",
             "gap_m": c.clearance_gap,
             "max_contact_force_n": float(row[ks.T_MAX_FN]),
-            "contact_time_fraction": float(row[ks.T_CONTACT_TIME] / duration) if duration else 0.0,
+            "contact_time_fraction": (
+                min(1.0, float(row[ks.T_CONTACT_TIME] / duration)) if duration else 0.0
+            ),
             "impacts": int(row[ks.T_IMPACTS]),
             "max_penetration_m": float(row[ks.T_MAX_DELTA]),
             "worn_volume_m3": float(row[ks.T_WORN_VOLUME]),
