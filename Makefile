@@ -4,7 +4,7 @@ VENV := .venv
 BIN := $(VENV)/bin
 OUT ?= results/flores2009_fourbar
 
-.PHONY: install run test lint clean clean-cache
+.PHONY: install run test lint docs clean clean-cache
 
 install: $(VENV)/.installed
 
@@ -23,8 +23,16 @@ test: install
 lint: install
 	$(BIN)/ruff check .
 
+# The documentation site (mkdocs.yml): docs/*.md and the API from the docstrings, into site/.
+docs: $(VENV)/.docs-installed
+	$(BIN)/mkdocs build --strict --site-dir site
+
+$(VENV)/.docs-installed: $(VENV)/.installed pyproject.toml
+	$(BIN)/pip install --quiet -e '.[dev,docs]'
+	touch $@
+
 clean:
-	rm -rf $(VENV) results .pytest_cache
+	rm -rf $(VENV) results .pytest_cache site
 
 # Drops the compiled cache. Not needed after edits: any kernel edit invalidates all of it.
 clean-cache:

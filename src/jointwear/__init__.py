@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING
 from ._version import __version__
 
 if TYPE_CHECKING:
+    from .citations import citations_for, print_citations
     from .model import Model, ModelError, load_model
     from .results import Results, load_results
     from .run import run
@@ -27,9 +28,11 @@ _PUBLIC = {  # public name -> the module that defines it
     "Model": ".model",
     "ModelError": ".model",
     "Results": ".results",
+    "citations_for": ".citations",
     "life": ".studies.life.study",
     "load_model": ".model",
     "load_results": ".results",
+    "print_citations": ".citations",
     "run": ".run",
     "simulate": ".simulate",
     "sweep": ".studies.sweep.study",
@@ -41,9 +44,11 @@ __all__ = [
     "ModelError",
     "Results",
     "__version__",
+    "citations_for",
     "life",
     "load_model",
     "load_results",
+    "print_citations",
     "run",
     "simulate",
     "sweep",

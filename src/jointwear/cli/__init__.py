@@ -15,11 +15,12 @@ from typing import Annotated
 import typer
 
 from .._version import __version__
+from .citation_commands import citations
 from .run_commands import check, plot, run
 from .study_commands import life, sweep
 
 app = typer.Typer(no_args_is_help=True, help=__doc__.splitlines()[0], rich_markup_mode=None)
-for command in (run, check, plot, sweep, life):
+for command in (run, check, plot, sweep, life, citations):
     app.command()(command)
 
 

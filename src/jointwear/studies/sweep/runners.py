@@ -31,6 +31,10 @@ from ...status import ERROR, INTERRUPTED, SUCCESS
 CASE_FILE = "case.json"  # in each case folder: its settings and outcome, written last
 POLL_S = 0.3  # how often a runner looks at the stop flag while cases run [s]
 CONNECT_TIMEOUT_S = 10  # to reach a Dask scheduler [s]
+DASK_MISSING = (
+    "--scheduler {address}: sweeps on a cluster need Dask distributed, which is not "
+    "installed: pip install 'jointwear[dask]'"
+)
 WORKER_MODULE = "jointwear.run"  # what a case imports (simulate, the kernels): before workers start
 
 
@@ -248,10 +252,12 @@ def run_dask(
     Raises
     ------
     ModelError
-        If the scheduler cannot be reached.
+        If Dask distributed is not installed, or the scheduler cannot be reached.
     """
-    from dask.distributed import Client, as_completed  # only for sweeps on a cluster
-
+    try:  # only for sweeps on a cluster: the optional extra jointwear[dask]
+        from dask.distributed import Client, as_completed
+    except ImportError:
+        raise ModelError([DASK_MISSING.format(address=address)]) from None
     try:
         client = Client(address, timeout=CONNECT_TIMEOUT_S, set_as_default=False)
     except (OSError, ValueError, TypeError) as problem:
