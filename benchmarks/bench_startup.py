@@ -1,8 +1,9 @@
 """Whole-process times of the command line, one or more checkouts side by side (issue: the core).
 
 For each checkout (a repository root with its own ``.venv``), in turns so that a noisy machine
-weighs on all alike: ``jointwear --help``, ``jointwear check`` of the paper's four-bar, and
-``jointwear run --t-end 1 --no-figures --no-ideal`` warm (medians of ``--repeats``), and the
+weighs on all alike: ``jointwear --help``, ``jointwear check`` of the paper's four-bar,
+``jointwear run --t-end 1 --no-figures --no-ideal`` and the default ``jointwear run`` of
+``make run``, warm (medians of ``--repeats``), and the
 cold first run ``run --t-end 0.01 --no-figures --no-ideal`` with an empty numba cache (compile
 included; median of ``--cold-repeats``), with the peak memory of each process.
 
@@ -29,6 +30,7 @@ COMMANDS = {
     "help": ["--help"],
     "check": ["check", MODEL],
     "run_1s": ["run", MODEL, "--t-end", "1", "--no-figures", "--no-ideal"],
+    "make_run": ["run", MODEL],  # what `make run` does: figures and the ideal companion
 }
 COLD = ["run", MODEL, "--t-end", "0.01", "--no-figures", "--no-ideal"]
 # Runs the command in a child and prints its wall time [s] and peak resident memory [MB].

@@ -63,3 +63,9 @@ FOURBAR_COLUMNS = [
     "energy_contact",
     "constraint_violation",
 ]
+
+
+def whole_run(results: jw.Results, joint: str) -> dict:
+    """A clearance joint's summary with the whole run's figures, not the steady state's."""
+    entry = results.summary["clearance_joints"][joint]
+    return {**entry, **entry["whole_run"]}

@@ -19,7 +19,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from runs import disc
+from runs import disc, whole_run
 from scipy.integrate import quad, solve_ivp
 from scipy.optimize import brentq
 
@@ -219,7 +219,7 @@ def test_single_impact_restitution(law, c_e, integrator):
     assert hit["penetration_velocity_m_s"] == pytest.approx(V_IN, rel=1e-7)
     assert hit["bearing_angle_deg"] == pytest.approx(AIM, abs=1e-8)
     assert hit["journal_angle_deg"] == pytest.approx(AIM - BALL_ANGLE, abs=1e-8)
-    summary = res.summary["clearance_joints"]["gap"]
+    summary = whole_run(res, "gap")
     assert summary["impacts"] == 1
 
     # Rebound speed from every row of the free flight after the impact.
@@ -340,7 +340,7 @@ def test_contact_stiffness_by_hand_and_through_static_penetration(keys, stiffnes
     damping = 2.0 * math.sqrt(slope * 1.0)  # critical for the 1 kg ball
     res = run(pressed_ball(joint, damping, 0.03))
     df = res.timeseries
-    summary = res.summary["clearance_joints"]["gap"]
+    summary = whole_run(res, "gap")
     assert summary["impacts"] == 1  # overdamped landing: no bounce
     # After 20 ms (the ball lands at 6-7 ms and settles within a few 1/omega, 0.1 ms) it
     # rests: penetration, force and direction are the static ones to the integrator's
@@ -523,7 +523,7 @@ def test_hertz_patch_by_hand():
 def test_archard_closed_form_frictionless():
     res = run(wheel_model(0.0))
     df = res.timeseries
-    summary = res.summary["clearance_joints"]["gap"]
+    summary = whole_run(res, "gap")
     # One landing, overdamped: the wheel starts from rest under F and the damper, reaching the
     # wall after t_on = c c_d / F + m / c_d (the exponential term is e^-270), 7.363 ms.
     t_on = C * DAMP_ALONG / WHEEL_FORCE + 1.0 / DAMP_ALONG
@@ -557,7 +557,7 @@ def test_archard_closed_form_with_friction():
     friction = 0.1
     res = run(wheel_model(friction))
     df = res.timeseries
-    summary = res.summary["clearance_joints"]["gap"]
+    summary = whole_run(res, "gap")
     f_n = WHEEL_FORCE / math.sqrt(1.0 + friction**2)  # 995.0372 N
     settled = df["time"].to_numpy() >= SNAP
     # Settled: F_N = F / sqrt(1 + c_f^2), F_T = c_f F_N on the journal (+t, v_t being
@@ -593,7 +593,7 @@ def test_archard_closed_form_with_friction():
 
 def test_paper_style_peak_wear_goes_into_one_sector():
     res = run(wheel_model(0.0, wear_distribution="peak"))
-    summary = res.summary["clearance_joints"]["gap"]
+    summary = whole_run(res, "gap")
     _, p_max = hertz_patch(WHEEL_FORCE)
     # The journal: every step's depth share k p_max ds into the one sector holding NORMAL
     # (271 deg: sector 27), where the Hertz spreading fills 26 and 27 (previous tests).
@@ -630,7 +630,7 @@ def test_archard_with_wear_feedback():
     # Measured 1.2e-5 to 1.8e-5 on the journal and the volume, up to 5e-5 on a bearing sector
     # (the steps are coarser); 1e-4.
     res = run(wheel_model(0.0, wear_feedback=True, solver={"rtol": 1e-6, "atol": 1e-8}))
-    summary = res.summary["clearance_joints"]["gap"]
+    summary = whole_run(res, "gap")
     impulse = WHEEL_FORCE * T_WHEEL - DAMP_ALONG * (C + DELTA_WHEEL)
     assert summary["worn_volume_m3"] == pytest.approx(K_WEAR * V_SLIDE * impulse, rel=1e-4)
     rate = K_WEAR * WHEEL_FORCE * V_SLIDE * SNAP
@@ -690,7 +690,7 @@ def hanging_bar(joint: dict, integrator: str, rtol: float, output_interval: floa
 def test_energy_is_conserved_without_damping_and_friction(integrator, rtol):
     res = run(hanging_bar(clearance(damping="none"), integrator, rtol, 1e-5))
     df = res.timeseries
-    summary = res.summary["clearance_joints"]["pin"]
+    summary = whole_run(res, "pin")
     assert summary["impacts"] >= 10  # measured 38-39
     assert summary["energy_dissipated_damping_j"] == 0.0
     assert summary["energy_dissipated_friction_j"] == 0.0
@@ -716,7 +716,7 @@ def test_energy_is_conserved_with_every_elastic_law(law):
     rtol = 1e-8
     res = run(hanging_bar(clearance(damping="none", **law), "dopri5", rtol, 1e-5))
     df = res.timeseries
-    assert res.summary["clearance_joints"]["pin"]["impacts"] >= 10
+    assert whole_run(res, "pin")["impacts"] >= 10
     total = (df["energy_kinetic"] + df["energy_potential"] + df["energy_contact"]).to_numpy()
     # Bound as for Hertz above; the contact energy at the peaks is again far above it.
     assert np.abs(total - total[0]).max() <= 200.0 * rtol * BAR_SCALE
@@ -730,7 +730,7 @@ def test_energy_lost_is_the_dissipation_reported(friction_law):
     )
     res = run(hanging_bar(joint, "dopri5", 1e-8, 1e-4))
     df = res.timeseries
-    summary = res.summary["clearance_joints"]["pin"]
+    summary = whole_run(res, "pin")
     total = (df["energy_kinetic"] + df["energy_potential"] + df["energy_contact"]).to_numpy()
     lost = total[0] - total[-1]  # 0.020 J
     dissipated = summary["energy_dissipated_damping_j"] + summary["energy_dissipated_friction_j"]
@@ -790,7 +790,7 @@ def fourbar_rate(res: jw.Results) -> np.ndarray:
 @pytest.mark.parametrize("sectors", [36, 72])
 def test_fourbar_wear_table_holds_the_worn_volume(sectors):
     res = fourbar(f"joints.{JOINT}.clearance.sectors={sectors}")
-    summary = res.summary["clearance_joints"][JOINT]
+    summary = whole_run(res, JOINT)
     assert summary["worn_volume_m3"] > 0.0
     # The Hertz spreading conserves volume: the table's sum of depth x R x (2 pi / N) x L over
     # both surfaces is the summary's k int F_N ds, to rounding (measured 3e-15); 1e-9.
@@ -807,8 +807,8 @@ def test_fourbar_wear_table_holds_the_worn_volume(sectors):
 
 
 def test_fourbar_worn_volume_does_not_depend_on_the_sector_count():
-    v36 = fourbar(f"joints.{JOINT}.clearance.sectors=36").summary["clearance_joints"][JOINT]
-    v72 = fourbar(f"joints.{JOINT}.clearance.sectors=72").summary["clearance_joints"][JOINT]
+    v36 = whole_run(fourbar(f"joints.{JOINT}.clearance.sectors=36"), JOINT)
+    v72 = whole_run(fourbar(f"joints.{JOINT}.clearance.sectors=72"), JOINT)
     # The sectors only discretise where the volume goes; through the feedback they change the
     # worn profile the contact sees by a fraction of its depth (2.5e-7 m, against c = 2e-4 m),
     # and the runs differ by what such a small perturbation does to the impacts (the four-bar
@@ -837,14 +837,14 @@ def test_fourbar_converges_as_the_tolerance_tightens(integrator):
     ref = fourbar(method, rtol=1e-10)
     ref_e = xy(ref.timeseries, f"{JOINT}_e")
     ref_wear = ref.wear["depth_m"].to_numpy()
-    ref_volume = ref.summary["clearance_joints"][JOINT]["worn_volume_m3"]
+    ref_volume = whole_run(ref, JOINT)["worn_volume_m3"]
     orbit, profile, volume = [], [], []
     for rtol in CONVERGENCE_RTOLS:
         res = fourbar(method, rtol=rtol)
         assert len(res.timeseries) == len(ref.timeseries)
         orbit.append(np.hypot(*(xy(res.timeseries, f"{JOINT}_e") - ref_e)).max() / C)
         profile.append(np.abs(res.wear["depth_m"].to_numpy() - ref_wear).max() / ref_wear.max())
-        summary = res.summary["clearance_joints"][JOINT]
+        summary = whole_run(res, JOINT)
         volume.append(abs(summary["worn_volume_m3"] / ref_volume - 1.0))
     for differences in (orbit, profile):
         assert all(b < a for a, b in itertools.pairwise(differences))
@@ -939,7 +939,7 @@ def test_no_wear_while_the_contact_sticks(friction_law):
     # stiction_speed, the defaults). The ball lands, bounces four times and rests on the
     # bottom of the bearing for 3/4 of the run.
     stuck = run(spinning_ball(friction_law, 5e-5))
-    summary = stuck.summary["clearance_joints"]["gap"]
+    summary = whole_run(stuck, "gap")
     assert summary["contact_time_fraction"] > 0.5  # measured 0.767
     # Ambrosio: sliding at 5e-5 m/s has no friction at all, and the ball only moves up and down
     # (n vertical, de/dt along n), so the sliding speed stays exactly 5e-5 m/s. Stick-slip:
@@ -959,7 +959,7 @@ def test_no_wear_while_the_contact_sticks(friction_law):
     assert summary["worn_volume_m3"] == 0.0
     assert (stuck.wear["depth_m"] == 0.0).all()
     # The same at 5e-3 m/s slides, and wears.
-    sliding = run(spinning_ball(friction_law, 5e-3)).summary["clearance_joints"]["gap"]
+    sliding = whole_run(run(spinning_ball(friction_law, 5e-3)), "gap")
     assert sliding["sliding_distance_m"] > 1e-4  # ~ 5e-3 m/s x 0.077 s of contact
     assert sliding["worn_volume_m3"] > 1e-16  # ~3e-16 m^3
 

@@ -19,7 +19,7 @@ import math
 
 import numpy as np
 import pytest
-from runs import disc
+from runs import disc, whole_run
 from scipy.optimize import brentq
 
 import jointwear as jw
@@ -230,7 +230,7 @@ def test_steady_journal_bearing_matches_the_closed_form(lubrication):
     np.testing.assert_allclose(rows["J_film_fx"], 0.0, atol=1e-8 * load)
     np.testing.assert_allclose(rows["J_film_fy"], load, rtol=1e-8)
     np.testing.assert_allclose(rows["J_fn"], 0.0, atol=0.0)
-    summary = res.summary["clearance_joints"]["J"]
+    summary = whole_run(res, "J")
     ranges = summary["outside_law_ranges"]["eccentricity_ratio"]
     assert ranges["limit"] == BREAKDOWN
     assert ranges["time_beyond_s"] == 0.0
@@ -310,7 +310,7 @@ def test_rigid_corotation_carries_no_film_force():
     film = np.hypot(df["J_film_fx"], df["J_film_fy"]).to_numpy()
     assert film.max() < 2e-3
     assert df["J_film_power"].max() < 1e-8
-    assert res.summary["clearance_joints"]["J"]["contact_time_fraction"] == 0.0
+    assert whole_run(res, "J")["contact_time_fraction"] == 0.0
 
 
 # The same journal under the same load with the bearing turning too: the wedge is driven by
@@ -374,7 +374,7 @@ def test_film_energy_is_the_integral_of_its_power(name):
     time = df["time"].to_numpy()
     assert (power >= 0.0).all()
     assert power.max() > 0.1
-    energy = res.summary["clearance_joints"]["J"]["energy_dissipated_film_j"]
+    energy = whole_run(res, "J")["energy_dissipated_film_j"]
     # The summary sums the power at the accepted steps' midpoints; the rows (1e-4 s apart) give
     # the trapezoid sum T(dt). Both are second-order sums of one integral. The rows resolve it:
     # dropping every other row moves T by at most 5e-7 of it (measured), 2e-6 asserted. The
@@ -405,7 +405,7 @@ def test_a_free_journal_loses_to_the_film_what_it_dissipates():
     assert kinetic[0] == pytest.approx(0.5 * 1e-4 * OMEGA**2, rel=1e-12)
     assert df["omega_shaft"].iloc[-1] < 0.9 * OMEGA
     work = SHORT_LOAD * (df["y_shaft"].iloc[0] - df["y_shaft"].iloc[-1])
-    film = res.summary["clearance_joints"]["J"]["energy_dissipated_film_j"]
+    film = whole_run(res, "J")["energy_dissipated_film_j"]
     assert film == pytest.approx(kinetic[0] - kinetic[-1] + work, rel=1e-5)
 
 
@@ -434,7 +434,7 @@ def test_film_hands_over_to_solid_contact_and_only_then_wears():
     res = hand_over_run()
     df = res.timeseries
     time = df["time"].to_numpy()
-    summary = res.summary["clearance_joints"]["J"]
+    summary = whole_run(res, "J")
     # The film's capacity at film_breakdown, by the closed form: 385 N, the load's at 0.077 s.
     # The squeeze of the sinking journal shares the load on the way, so eps passes 0.95 a
     # little later (measured 0.0794 s, the load then at 397 N); 10 %.
@@ -499,7 +499,7 @@ def test_a_carried_load_wears_nothing():
     # not even a rounding's worth.
     res = steady_run("short_bearing")
     df = res.timeseries
-    summary = res.summary["clearance_joints"]["J"]
+    summary = whole_run(res, "J")
     assert df["J_eps"].max() < BREAKDOWN
     assert (df["J_delta"] < -0.4 * C).all()
     assert (df["J_fn"] == 0.0).all()
@@ -624,7 +624,7 @@ def test_elastic_foundation_wear_distribution(normal_law):
     model, along = pressed_pin(normal_law)
     res = run(model)
     df = res.timeseries
-    summary = res.summary["clearance_joints"]["J"]
+    summary = whole_run(res, "J")
     delta = static_penetration(normal_law)
     assert summary["impacts"] == 1  # overdamped landing at t_on = c c_d / F + m / c_d
     t_on = C * along / FORCE + 1.0 / along  # 7.4 ms (Hertz), 17.7 ms (foundation)

@@ -16,7 +16,7 @@ from jointwear.kernels.codes import Status
 from jointwear.status import status_message
 
 FILES = ("summary.json", "model.json", "timeseries.csv", "timeseries.parquet", "events.csv")
-CLEARANCE_FILES = ("wear.csv", "wear_snapshots.csv", "impacts.csv")
+CLEARANCE_FILES = ("wear.csv", "wear_snapshots.csv", "impacts.csv", "cycles.csv")
 
 
 def simulate(name: str, overrides: list[str], **kwargs) -> jw.Results:
@@ -186,3 +186,18 @@ def test_signal_during_a_run_gives_interrupted_partial_results(tmp_path):
     assert results.message.startswith("interrupted by the user")
     assert results.summary["stats"]["t_reached"] == pytest.approx(calls[0])
     assert signal.getsignal(signal.SIGINT) is before  # the handler is put back
+
+
+def test_summary_says_how_the_run_was_made(pendulum):
+    import importlib.metadata
+    import sys
+    from datetime import UTC, datetime
+
+    origin = pendulum.summary["provenance"]
+    assert origin["jointwear"] == jw.__version__
+    assert origin["python"] == ".".join(map(str, sys.version_info[:3]))
+    assert origin["dependencies"]["numba"] == importlib.metadata.version("numba")
+    assert origin["dependencies"]["numpy"] == np.__version__
+    started = datetime.fromisoformat(origin["started_utc"])
+    assert 0 <= (datetime.now(UTC) - started).total_seconds() < 3600
+    assert origin["command"]  # the process's own command line, quoted for a shell

@@ -16,7 +16,7 @@ from ._version import __version__
 
 if TYPE_CHECKING:
     from .citations import citations_for, print_citations
-    from .model import Model, ModelError, load_model
+    from .model import Model, ModelError, load_model, parse_model
     from .results import Results, load_results
     from .run import run
     from .simulate import simulate
@@ -32,6 +32,7 @@ _PUBLIC = {  # public name -> the module that defines it
     "life": ".studies.life.study",
     "load_model": ".model",
     "load_results": ".results",
+    "parse_model": ".model",
     "print_citations": ".citations",
     "run": ".run",
     "simulate": ".simulate",
@@ -48,6 +49,7 @@ __all__ = [
     "life",
     "load_model",
     "load_results",
+    "parse_model",
     "print_citations",
     "run",
     "simulate",

@@ -30,6 +30,7 @@ from .kernels.structs import StructProxy, to_struct
 from .lockup import find_lock_up, lock_up_span
 from .model import Model, ModelError
 from .model.sections import FORMULATIONS
+from .provenance import provenance
 from .results import Results
 from .results import slider as slider_results
 from .results.clearance import (
@@ -168,6 +169,7 @@ def simulate(
         Time series, events and summary; partial, with a non-success status, if the run
         failed or was interrupted.
     """
+    origin = provenance()
     # Set-up and compiling lose nothing when cut short: a Ctrl-C there stops at once.
     with interruptible():
         solver = model.solver
@@ -361,6 +363,7 @@ def simulate(
             else _joint_figures(model, journals.wear, sliders.wear, *steady[:2]),
         )
         tables["cycles"] = windows.table(model)
+    summary["provenance"] = origin
     return Results(
         model=model,
         timeseries=pd.DataFrame(data, columns=columns),

@@ -103,7 +103,8 @@ def to_si(value: object, dimension: str, field_name: str | None = None) -> float
     Parameters
     ----------
     value
-        A number (already SI; radians for angles) or a string such as ``"9.8 mm"``.
+        A number (already SI; radians for angles), a string such as ``"9.8 mm"``, or a
+        pint Quantity.
     dimension
         The expected pint dimension, e.g. ``"[length]"``, ``"[mass] * [length] ** 2"``,
         ``"1/[time]"`` for angular speeds or ``"[]"`` for angles.
@@ -131,6 +132,11 @@ def to_si(value: object, dimension: str, field_name: str | None = None) -> float
 
 
 def _to_si(value: object, dimension: str, expected: str) -> float:
+    if _is_quantity(value):  # a pint Quantity, of any registry: read as its text
+        try:
+            value = f"{float(value.magnitude)!r} {value.units}"
+        except (TypeError, ValueError):
+            raise ValueError(f"{_SHORT.repr(value)} is not one number; {expected}") from None
     shown = _SHORT.repr(value)
     if isinstance(value, bool) or not isinstance(value, int | float | str):
         raise ValueError(f"{shown} is not a number; {expected} (plain numbers are SI)")
@@ -174,6 +180,11 @@ def _to_si(value: object, dimension: str, expected: str) -> float:
     if not math.isfinite(result):
         raise ValueError(f"{shown} is not finite in SI units; {expected}")
     return result
+
+
+def _is_quantity(value: object) -> bool:
+    """Whether ``value`` looks like a pint Quantity (a magnitude with units)."""
+    return all(hasattr(value, name) for name in ("magnitude", "units", "dimensionality"))
 
 
 ANGLE_UNITS = frozenset({"radian", "degree", "arcminute", "arcsecond", "turn", "grade"})

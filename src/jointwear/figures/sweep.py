@@ -114,7 +114,7 @@ def save_sweep_figures(
     texts: Mapping[str, Mapping[object, str]],
     folder: str | Path,
 ) -> list[Path]:
-    """Write one figure per headline column that has a value; return the paths.
+    """Write one figure per headline column whose value changes between cases; return paths.
 
     ``texts`` as for ``plot_sweep``. PNGs that an earlier sweep wrote in ``folder`` and that
     are not drawn again are removed (only jointwear's own files, ``jointwear.io.remove``).
@@ -122,7 +122,7 @@ def save_sweep_figures(
     path = Path(folder)
     written = []
     for column in columns:
-        if pd.to_numeric(table[column], errors="coerce").notna().any():
+        if pd.to_numeric(table[column], errors="coerce").dropna().nunique() > 1:
             file = path / f"{re.sub(r'[^A-Za-z0-9._-]+', '_', column)}.png"
             with suppress(ForeignFileError):  # a file of the user's of that name is kept
                 written.append(save_png(plot_sweep(table, column, texts), file, dpi=120))

@@ -18,13 +18,18 @@ def apply_overrides(data: dict, overrides: Iterable[str]) -> dict:
     ModelError
         If an override is malformed or its path runs through a missing array item or a value.
     """
+    return apply_changes(data, parse_overrides(overrides))
+
+
+def parse_overrides(overrides: Iterable[str]) -> list[tuple[str, object]]:
+    """The ``(dotted.path, value)`` pairs that ``dotted.path=value`` texts stand for."""
     changes = []
     for override in overrides:
         dotted, equals, text = override.partition("=")
         if not equals or not all(dotted.strip().split(".")):
             raise ModelError([f"--set {override}: expected path=value, e.g. solver.t_end=0.5"])
         changes.append((dotted.strip(), toml_value(text)))
-    return apply_changes(data, changes)
+    return changes
 
 
 def apply_changes(data: dict, changes: Iterable[tuple[str, object]]) -> dict:

@@ -4,9 +4,10 @@ A validated :class:`Model` holds plain SI floats (tuples for vectors) and names;
 user-input problem is reported as a :class:`ModelError` with one line per problem.
 """
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from os import PathLike
 from pathlib import Path
+from types import MappingProxyType
 from typing import Annotated
 
 from pydantic import Field, ValidationError, model_validator
@@ -14,7 +15,7 @@ from pydantic import Field, ValidationError, model_validator
 from .errors import TOO_DEEP, ModelError, from_validation_error
 from .files import read_model_data
 from .functions import longest_period
-from .overrides import apply_overrides
+from .overrides import apply_changes, apply_overrides, parse_overrides
 from .references import reference_problems
 from .sections import (
     Body,
@@ -71,6 +72,21 @@ class Model(Table):
                 f"{t_end / self.cycle:.6g}"
             ])  # fmt: skip
         return self
+
+    def with_values(self, changes: Mapping[str, object] = MappingProxyType({})) -> "Model":
+        """The model with values changed, validated again as a model file would be.
+
+        ``changes`` maps dotted paths, as ``--set`` takes them
+        (``"joints.coupler_follower.clearance.wear_coefficient"``, ``"bodies.crank.mass"``),
+        to values: SI numbers, strings with units (``"3 kg"``) or pint Quantities.
+
+        Raises
+        ------
+        ModelError
+            One line per problem, as for a model file.
+        """
+        data = apply_changes(self.model_dump(mode="json"), changes.items())
+        return parse_model(data, name=self.name)
 
     @property
     def cycle(self) -> float | None:
@@ -153,18 +169,20 @@ def parse_model(data: dict, name: str = "model") -> Model:
         raise from_validation_error(error, data) from None
 
 
-def load_model(path: str | PathLike, overrides: Sequence[str] = ()) -> Model:
+def load_model(path: "str | PathLike | Model", overrides: Sequence[str] = ()) -> Model:
     """Read a TOML model file, apply dotted ``path=value`` overrides, and validate it.
 
     The model name defaults to the file name without its suffix. A file may extend another
     (``model.files``). `path` may also be a results folder: its ``model.json``, the model it
-    was run with.
+    was run with; or a ``Model`` already built, to which the overrides are applied.
 
     Raises
     ------
     ModelError
         If the file cannot be read, is not valid TOML, or describes an invalid model.
     """
+    if isinstance(path, Model):
+        return path.with_values(dict(parse_overrides(overrides))) if overrides else path
     path = Path(path)
     try:
         data = read_model_data(path)

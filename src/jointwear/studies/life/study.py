@@ -43,7 +43,7 @@ from pathlib import Path
 import pandas as pd
 
 from ...interrupts import stop_requests
-from ...model import ModelError, load_model
+from ...model import Model, ModelError, load_model
 from ...results.run_state import RunState
 from ...status import INTERRUPTED, SUCCESS
 from . import files
@@ -87,7 +87,7 @@ class LifeResults:
 
 
 def life(
-    model_path: str | PathLike,
+    model_path: str | PathLike | Model,
     out: str | PathLike,
     *,
     cycles: int,
@@ -109,7 +109,8 @@ def life(
     Parameters
     ----------
     model_path
-        TOML model file, with clearance joints and periodic drivers.
+        TOML model file, with clearance joints and periodic drivers; or a results folder (its
+        ``model.json``), or a ``Model``.
     out
         Folder for life.csv, profiles.csv, summary.json, model.json, figures/ and checkpoint/.
     cycles

@@ -29,6 +29,7 @@ import pandas as pd
 from ...interrupts import stop_requests
 from ...io import check_folder, claim, make_folder, write_atomic, write_text
 from ...model import Model, ModelError, load_model
+from ...model.files import SAVED_MODEL
 from ...status import NOT_RUN, SUCCESS
 from ..life.settings import MAX_CYCLES
 from .cases import Case, check_vary, make_cases, si_value, value_text
@@ -71,7 +72,7 @@ class SweepResults:
 
 
 def sweep(
-    model_path: str | os.PathLike,
+    model_path: str | os.PathLike | Model,
     out: str | os.PathLike,
     *,
     vary: Mapping[str, Sequence[object]],
@@ -87,7 +88,8 @@ def sweep(
     Parameters
     ----------
     model_path
-        TOML model file.
+        TOML model file, a results folder (its ``model.json``), or a ``Model`` (saved as
+        ``out/model.json`` for the cases to read).
     out
         Sweep folder (created); a case finished there by an earlier run of the same sweep
         (same resolved model and cycles) is not run again.
@@ -130,6 +132,11 @@ def sweep(
     folder = Path(out).resolve()
     check_folder(folder)
     claim(folder, ("sweep.json", "sweep.csv", "sweep.parquet", f"{CASES_FOLDER}/", f"{FIGURES}/"))
+    if isinstance(model_path, Model):  # the cases, maybe in other processes, read it there
+        claim(folder, (SAVED_MODEL,))
+        make_folder(folder)
+        write_text(folder / SAVED_MODEL, model_path.model_dump_json(indent=2))
+        model_path = folder
     tasks = [_task(model_path, folder, overrides, cycles, c, models[c.id]) for c in cases]
     _write_json(folder / "sweep.json", _plan_record(model_path, texts, overrides, cycles, cases))
 
@@ -351,7 +358,11 @@ def _headline_columns(table: pd.DataFrame, models: Mapping[str, Model]) -> list[
     joints = {
         j.name for model in models.values() for j in (*model.clearance_joints, *model.slider_joints)
     }
-    return [c for c in table.columns if c.partition(".")[0] in joints and c not in FIXED_COLUMNS]
+    return [
+        c
+        for c in table.columns
+        if c.partition(".")[0] in joints and c not in FIXED_COLUMNS and ".whole_run." not in c
+    ]  # the steady state's figures; the whole run's are in the table
 
 
 def _write_table(table: pd.DataFrame, folder: Path) -> None:
