@@ -84,8 +84,11 @@ def test_version_prints_the_version_and_exits_0():
 def test_shell_completion_is_offered_and_completes_commands_and_options():
     assert {"--install-completion", "--show-completion"} <= set(invoke("--help").stdout.split())
     command = [sys.executable, "-m", "jointwear"]
-    script = subprocess.run([*command, "--show-completion", "bash"], capture_output=True,
-                            text=True, timeout=60)  # fmt: skip
+    # typer finds the shell among the process's parents (shellingham): start it from one,
+    # since pytest may run orphaned (its parent the init process) where no shell is found.
+    # ("; exit": bash would otherwise replace itself by a lone command)
+    in_bash = ["bash", "-c", '"$0" -m jointwear --show-completion; exit', sys.executable]
+    script = subprocess.run(in_bash, capture_output=True, text=True, timeout=60)
     assert script.returncode == 0, script.stderr
     assert "_JOINTWEAR_COMPLETE=complete_bash" in script.stdout
     for words_typed, cword, expected in (("jointwear ch", 1, "check"),

@@ -26,10 +26,24 @@ def main(argv: list[str] | None = None) -> None:
     """Run the command line ``argv`` (default ``sys.argv[1:]``) and exit with its code."""
     signal.signal(signal.SIGTERM, _interrupt)
     try:
-        sys.exit(_run(argv))
+        code = _run(argv)
+    except SystemExit as exit_request:  # typer ends every command this way
+        code = exit_request.code
     except KeyboardInterrupt:
         _say("interrupted")
-        sys.exit(INTERRUPTED)
+        code = INTERRUPTED
+    from .interrupts import cut_short
+
+    if cut_short():  # the interpreter's clean-up could crash on what the interrupt left
+        _flush()
+        os._exit(code if isinstance(code, int) else 1 if code else 0)
+    sys.exit(code)
+
+
+def _flush() -> None:
+    for stream in (sys.stdout, sys.stderr):
+        with contextlib.suppress(OSError, ValueError):
+            stream.flush()
 
 
 def _run(argv: list[str] | None) -> int:

@@ -10,6 +10,7 @@ from collections.abc import Iterator
 from contextlib import contextmanager
 
 _open: tuple[int, list[bool]] | None = None  # (process id, flag) of the outermost open block
+_cut_short = False  # an interrupt raised inside an interruptible block (see cut_short)
 
 
 @contextmanager
@@ -61,7 +62,8 @@ def interruptible() -> Iterator[None]:
     hit = [False]
 
     def interrupt(signum: int, frame: object) -> None:
-        hit[0] = True
+        global _cut_short
+        hit[0] = _cut_short = True
         if outer is not None:
             outer[0] = True
         raise KeyboardInterrupt
@@ -82,3 +84,13 @@ def interruptible() -> Iterator[None]:
 
 def _quiet(unraisable: object) -> None:
     """An ``sys.unraisablehook`` that says nothing."""
+
+
+def cut_short() -> bool:
+    """Whether an interrupt was raised inside an ``interruptible`` block of this process.
+
+    The block may have been in a library's work (numba loading or compiling kernels) whose
+    native objects it left half-built; freeing them as the interpreter shuts down can crash
+    it (a double free, SIGABRT), so the command line ends such a process without that.
+    """
+    return _cut_short
