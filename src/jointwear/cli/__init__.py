@@ -16,11 +16,12 @@ import typer
 
 from .._version import __version__
 from .citation_commands import citations
+from .export_commands import export
 from .run_commands import check, plot, run
 from .study_commands import life, sweep
 
 app = typer.Typer(no_args_is_help=True, help=__doc__.splitlines()[0], rich_markup_mode=None)
-for command in (run, check, plot, sweep, life, citations):
+for command in (run, check, plot, sweep, life, citations, export):
     app.command()(command)
 
 

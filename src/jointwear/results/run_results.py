@@ -6,15 +6,19 @@ per clearance joint its contact and wear figures), ``timeseries.csv`` and
 model, SI), so that it describes itself; with clearance joints also ``wear.csv`` (final
 profiles), ``wear_snapshots.csv``, ``impacts.csv`` (``results.clearance``) and
 ``cycles.csv`` (``results.cycles``).
-``load_results`` reads it back.
+``load_results`` reads it back. ``Results.export`` writes the tables to one netCDF4 or
+MATLAB file (``results.export``), each column's unit from ``results.column_units``.
 """
 
 from __future__ import annotations
 
+import difflib
+import html
 import json
 import os
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import pandas as pd
 import pyarrow as pa
@@ -25,6 +29,10 @@ from ..io import make_folder, remove, write_atomic, write_text
 from ..model import Model, parse_model
 from .run_state import RunState
 
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+    from matplotlib.figure import Figure
+
 IDEAL_FOLDER = "ideal"  # subfolder with the all-ideal companion run of a clearance model
 
 
@@ -33,7 +41,10 @@ class Results:
     """Outcome of ``simulate``: time series, event log and summary of one model.
 
     ``wear``, ``wear_snapshots``, ``impacts`` and ``cycles`` are empty without clearance
-    joints.
+    joints. In a notebook: ``results`` shows a short description,
+    ``results.to_dataframe("impacts")`` a table, ``results.units()`` each column's unit,
+    ``results.plot("omega_follower")`` a figure and ``results.export("run.nc")`` writes a
+    file for other tools.
     """
 
     model: Model
@@ -61,6 +72,112 @@ class Results:
         """Human-readable explanation of the status."""
         return self.summary["message"]
 
+    def __repr__(self) -> str:
+        return describe(self)
+
+    def _repr_html_(self) -> str:
+        return f"<pre>{html.escape(describe(self))}</pre>"
+
+    def to_dataframe(self, table: str = "timeseries") -> pd.DataFrame:
+        """A copy of one of the run's tables.
+
+        Parameters
+        ----------
+        table
+            ``timeseries`` (one row per output time, SI columns named after the model's
+            bodies, drivers and joints), ``events``, ``wear`` (final profiles [m]),
+            ``wear_snapshots``, ``impacts`` or ``cycles``.
+
+        Returns
+        -------
+        pandas.DataFrame
+            The table (empty where the model has no clearance joints); changing it leaves the
+            results as they were.
+
+        Raises
+        ------
+        ValueError
+            For any other table name.
+        """
+        return getattr(self, _table_name(table)).copy()
+
+    def units(self, table: str = "timeseries") -> dict[str, str]:
+        """The unit of each column of a table, read from the column names.
+
+        Parameters
+        ----------
+        table
+            One of ``TABLES``, as for ``to_dataframe``.
+
+        Returns
+        -------
+        dict[str, str]
+            Column name -> unit: ``"m"``, ``"rad/s"``, ``"N m"``, ...; ``"1"`` for a
+            dimensionless number or a count, ``""`` for text (a joint's name), ``"?"`` for a
+            column jointwear does not know.
+        """
+        from .column_units import table_units
+
+        return table_units(list(getattr(self, _table_name(table)).columns), self.model)
+
+    def plot(self, *columns: str, x: str = "time", ax: Axes | None = None) -> Figure:
+        """Plot time-series columns against ``x``, the axes labelled with their units.
+
+        Parameters
+        ----------
+        *columns
+            Time-series column names (``"omega_follower"``, ``"coupler_follower_fn"``).
+        x
+            The column along the horizontal axis (default time [s]).
+        ax
+            matplotlib Axes to draw on; a new Figure (without pyplot) if None.
+
+        Returns
+        -------
+        matplotlib.figure.Figure
+            The figure drawn on: ``fig.savefig("omega.png")`` writes it.
+
+        Raises
+        ------
+        ValueError
+            If no column is given, or a name is not a time-series column (with the closest
+            names).
+        """
+        if not columns:
+            raise ValueError("plot: name at least one time-series column, e.g. plot('time')")
+        for name in (*columns, x):
+            _check_column(name, list(self.timeseries.columns))
+        from ..figures.columns import plot_columns  # matplotlib only when plotting
+
+        return plot_columns(self, tuple(columns), x=x, ax=ax)
+
+    def export(self, path: str | os.PathLike) -> Path:
+        """Write every table to one file, in the format its suffix names.
+
+        Parameters
+        ----------
+        path
+            ``*.nc``: netCDF4 (HDF5) for xarray, h5py and MATLAB's ``ncread``: the time
+            series along dimension ``time``, each other table a group, every variable with
+            a ``units`` attribute, the summary as JSON in the global attribute ``summary``.
+            ``*.mat``: MATLAB 5, a struct per table, a ``units`` struct, ``summary`` JSON.
+
+        Returns
+        -------
+        Path
+            The file written.
+
+        Raises
+        ------
+        ImportError
+            Without the ``export`` extra: ``pip install 'jointwear[export]'``.
+        ValueError
+            For another suffix.
+        """
+        from .export import export
+
+        return export(self, path)
+
     def save(self, folder: str | os.PathLike) -> Path:
         """Write the results folder (created if needed); return its path."""
         path = make_folder(folder)
@@ -82,6 +199,7 @@ class Results:
 
 
 _CLEARANCE_TABLES = ("wear", "wear_snapshots", "impacts", "cycles")
+TABLES = ("timeseries", "events", *_CLEARANCE_TABLES)  # Results.to_dataframe's names
 CLEARANCE_FILES = tuple(f"{name}.csv" for name in _CLEARANCE_TABLES)
 FILES = (  # what a results folder may hold, clearance tables last, for ``jointwear.io.claim``
     "summary.json", "model.json", "timeseries.csv", "timeseries.parquet", "events.csv",
@@ -90,6 +208,58 @@ FILES = (  # what a results folder may hold, clearance tables last, for ``jointw
 # Read as floats even when every value is whole ("5" is still 5.0).
 _FLOAT_COLUMNS = {"angle_deg": float, "position_m": float, "guide_position_m": float,
                   "depth_m": float, "time_s": float}  # fmt: skip
+
+
+def _table_name(table: str) -> str:
+    """``table`` if it names one of the tables, else a ValueError naming them."""
+    if table not in TABLES:
+        raise ValueError(f"no table {table!r}; the tables are {', '.join(TABLES)}")
+    return table
+
+
+def _check_column(name: str, columns: list[str]) -> None:
+    """A ValueError unless ``name`` is one of ``columns``, with the closest names."""
+    if name in columns:
+        return
+    close = difflib.get_close_matches(name, columns, n=5, cutoff=0.5)
+    hint = f"did you mean {', '.join(map(repr, close))}?" if close else "see results.units()"
+    raise ValueError(f"no time-series column {name!r}; {hint}")
+
+
+def describe(results: Results) -> str:
+    """A few lines about a run: model, status, time reached, tables, clearance joints."""
+    summary, series = results.summary, results.timeseries
+    t_reached = summary.get("stats", {}).get("t_reached")
+    if t_reached is None and "time" in series and len(series):
+        t_reached = float(series["time"].iloc[-1])
+    reached = "?" if t_reached is None else f"{t_reached:.6g} s"
+    lines = [
+        f"Results of {results.model.name!r}: {results.status} ({results.message})",
+        f"  time reached {reached}; timeseries {len(series)} rows x {series.shape[1]} columns",
+    ]
+    joints = summary.get("clearance_joints", {})
+    if joints:
+        steady = summary.get("steady_state", {})
+        span = (
+            f"steady state from {steady['from_s']:.6g} s"
+            if steady.get("from_s") is not None
+            else "whole run"
+        )
+        lines.append(f"  clearance joints ({span}):")
+        for name, entry in joints.items():
+            lines.append(
+                f"    {name} ({entry.get('type', '?')}): max contact force "
+                f"{entry.get('max_contact_force_n', float('nan')):.4g} N, "
+                f"{entry.get('impacts', 0)} impacts"
+            )
+    tables = TABLES if results.has_clearance else TABLES[:2]
+    rows = ", ".join(f"{t} ({_rows(len(getattr(results, t)))})" for t in tables[1:])
+    lines.append(f"  tables: timeseries, {rows}; .to_dataframe(name), .units(name)")
+    return "\n".join(lines)
+
+
+def _rows(count: int) -> str:
+    return f"{count} row{'' if count == 1 else 's'}"
 
 
 def _write_csv(table: pd.DataFrame, path: Path) -> None:
