@@ -465,3 +465,24 @@ def test_check_reports_redundant_constraints_by_formulation(tmp_path):
     refused = invoke("check", path, "--set", "solver.formulation=baumgarte", env=NARROW)
     (line,) = assert_clean_failure(refused)
     assert "rank 2 for 4 equations" in line and "augmented_lagrangian" in line
+
+
+def test_plot_redraws_the_figures_of_sweep_and_life_folders(tmp_path):
+    sweep_folder = tmp_path / "sweep"
+    swept = invoke("sweep", FOURBAR, "--out", sweep_folder, "--t-end", "0.005", "--workers", 1,
+                   "--vary", "bodies.crank.mass=1,2", "--no-figures")  # fmt: skip
+    assert swept.exit_code == 0, swept.output
+    assert not (sweep_folder / "figures").exists()
+    drawn = invoke("plot", sweep_folder, env={"COLUMNS": "500"})
+    assert drawn.exit_code == 0, drawn.output
+    paths = [Path(line) for line in drawn.stdout.splitlines()]
+    assert paths and all(p.parent == sweep_folder / "figures" and p.is_file() for p in paths)
+    assert not any("whole_run" in p.name for p in paths)  # the steady state's figures
+    life_folder = tmp_path / "life"
+    lived = invoke("life", FOURBAR, "--out", life_folder, "--cycles", 2, "--no-figures")
+    assert lived.exit_code == 0, lived.output
+    drawn = invoke("plot", life_folder, env={"COLUMNS": "500"})
+    assert drawn.exit_code == 0, drawn.output
+    names = sorted(Path(line).name for line in drawn.stdout.splitlines())
+    assert names == ["life_profiles.png", "life_wear.png"]
+    assert all((life_folder / "figures" / name).stat().st_size > 1000 for name in names)

@@ -323,11 +323,11 @@ def _filled(table: Table, rows: list[tuple]) -> Table:
     return keep_whole(table, 1)
 
 
-OTHER_FOLDERS = {"life.csv": "life-run", "sweep.csv": "sweep"}  # what marks them
+STUDY_FOLDERS = {"life.csv": "life-run", "sweep.json": "sweep"}  # what marks them
 
 
 def plot(
-    folder: Annotated[Path, typer.Argument(help="Results folder.")],
+    folder: Annotated[Path, typer.Argument(help="Results folder of a run, a life run or a sweep.")],
     animation: Annotated[
         bool,
         typer.Option(
@@ -337,10 +337,10 @@ def plot(
     ] = False,
 ) -> None:
     """Draw (again) the figures of a results folder into FOLDER/figures."""
-    kind = next((kind for name, kind in OTHER_FOLDERS.items() if (folder / name).is_file()), None)
+    kind = next((kind for name, kind in STUDY_FOLDERS.items() if (folder / name).is_file()), None)
     if kind is not None:
-        err.print(f"{folder}: a {kind} folder; plot redraws the figures of run folders", **PLAIN)
-        raise typer.Exit(code=2)
+        _redraw_study(folder, kind)
+        return
     if not (folder / "summary.json").is_file():
         err.print(f"{folder}: not a results folder (no summary.json)", **PLAIN)
         raise typer.Exit(code=2)
@@ -348,6 +348,32 @@ def plot(
 
     with drawing_helper():
         _redraw(folder, animation)
+
+
+def _redraw_study(folder: Path, kind: str) -> None:
+    """Draw the figures of a life-run or sweep folder again (``plot``)."""
+    from ..model import ModelError
+    from ..studies.life.redraw import redraw_life_figures
+    from ..studies.sweep.study import redraw_sweep_figures
+
+    redraw = redraw_life_figures if kind == "life-run" else redraw_sweep_figures
+    try:
+        figures = redraw(folder)
+    except ModelError as error:
+        raise fail(error) from None
+    except OSError as error:
+        err.print(f"{folder}: cannot write its figures: {one_line(str(error))}", **PLAIN)
+        raise typer.Exit(code=3) from None
+    except (ValueError, LookupError, TypeError) as error:  # tables that do not fit the model
+        reason = one_line(" ".join(str(error).split()))[:300]
+        err.print(
+            f"{folder}: cannot draw its results ({type(error).__name__}: {reason}); the "
+            f"folder is damaged or incomplete: run the {kind} again",
+            **PLAIN,
+        )
+        raise typer.Exit(code=2) from None
+    for path in figures:
+        out.print(str(path), soft_wrap=True)
 
 
 def _redraw(folder: Path, animation: bool) -> None:

@@ -160,16 +160,50 @@ def sweep(
         _write_table(table, folder)
         drawn = []
         if figures:
-            from ...figures.sweep import save_sweep_figures  # matplotlib only when drawing
-
-            given = {  # per varied path, its table values as the sweep was given them
-                path: dict(zip(table[path], [c.values[path] for c in cases], strict=True))
-                for path in texts
+            joints = {
+                j.name for m in models.values() for j in (*m.clearance_joints, *m.slider_joints)
             }
-            drawn = save_sweep_figures(
-                table, _headline_columns(table, models), given, folder / FIGURES
-            )
+            drawn = _draw(folder, table, cases, joints)
     return SweepResults(folder, table, skipped, drawn, interrupted)
+
+
+def redraw_sweep_figures(folder: str | os.PathLike) -> list[Path]:
+    """Draw the comparison figures of the sweep folder ``folder`` again; return their paths.
+
+    Raises
+    ------
+    ModelError
+        If the folder is not a complete sweep folder (``sweep.json``, ``sweep.parquet``).
+    """
+    path = Path(folder)
+    try:
+        plan = json.loads((path / "sweep.json").read_text())
+        table = pd.read_parquet(path / "sweep.parquet")
+        cases = make_cases(plan["vary"])
+        saved = [path / CASES_FOLDER / case / SAVED_MODEL for case in plan["cases"]]
+        model = json.loads(next(p for p in saved if p.is_file()).read_text())
+    except (OSError, ValueError, LookupError, TypeError, StopIteration) as error:
+        raise ModelError(
+            [f"{path}: not a complete sweep folder ({type(error).__name__})"]
+        ) from None
+    joints = {j["name"] for j in model.get("joints", []) if j.get("clearance")}
+    return _draw(path, table, cases, joints)
+
+
+def _draw(folder: Path, table: pd.DataFrame, cases: Sequence[Case], joints: set[str]) -> list[Path]:
+    """The comparison figures of a sweep's table, into ``folder/figures``."""
+    from ...figures.sweep import save_sweep_figures  # matplotlib only when drawing
+
+    given = {  # per varied path, its table values as the sweep was given them
+        path: dict(zip(table[path], [c.values[path] for c in cases], strict=True))
+        for path in cases[0].values
+    }
+    headline = [
+        c
+        for c in table.columns
+        if c.partition(".")[0] in joints and c not in FIXED_COLUMNS and ".whole_run." not in c
+    ]  # the steady state's figures; the whole run's are in the table
+    return save_sweep_figures(table, headline, given, folder / FIGURES)
 
 
 def _mapping(vary: Mapping[str, Sequence[object]]) -> dict[str, Sequence[object]]:
@@ -352,17 +386,6 @@ def _whole(value: object) -> bool:
 
 def _is_number(value: object) -> bool:
     return isinstance(value, int | float) and not isinstance(value, bool)
-
-
-def _headline_columns(table: pd.DataFrame, models: Mapping[str, Model]) -> list[str]:
-    joints = {
-        j.name for model in models.values() for j in (*model.clearance_joints, *model.slider_joints)
-    }
-    return [
-        c
-        for c in table.columns
-        if c.partition(".")[0] in joints and c not in FIXED_COLUMNS and ".whole_run." not in c
-    ]  # the steady state's figures; the whole run's are in the table
 
 
 def _write_table(table: pd.DataFrame, folder: Path) -> None:
