@@ -12,6 +12,11 @@ Two targets, measured with the numba cache warm:
 - **life**: the ``jointwear life`` process wearing the paper's four-bar over 1e6 crank cycles
   with the default settings (target: under 60 s); wall time, updates, simulated cycles and
   the reported status.
+- **band** (on request, ``--band``): the README's million-turn example, ``jointwear life``
+  at a thousand times the paper's wear coefficient's inverse (8e-17 1/Pa) with its default
+  uncertainty band, as a process; beside it the direct run of every turn at the paper's
+  coefficient (8e-14 1/Pa), its turns scaled by the thousand (the dynamics depend on the
+  profiles, not on k): whether the band holds it, and the wall times.
 - **convergence** (on request): life runs over 1e6 turns at several ``--max-change``, at the
   paper's wear coefficient and a thousand times smaller, and the direct run (``--direct``):
   the turns at which the clearance has grown by 25, 50 and 75 %.
@@ -22,12 +27,14 @@ Usage (from the repository root, after ``make install``)::
     .venv/bin/python benchmarks/bench_studies.py --no-life --repeats 1 --t-end 0.02  # smoke
     .venv/bin/python benchmarks/bench_studies.py --no-sweep --no-life \
         --convergence 8%,4%,2%,1%,0.5% --direct                              # 6 minutes
+    .venv/bin/python benchmarks/bench_studies.py --no-sweep --no-life --band  # 3 minutes
 """
 
 from __future__ import annotations
 
 import argparse
 import json
+import math
 import os
 import statistics
 import subprocess
@@ -36,6 +43,7 @@ import tempfile
 import time
 from pathlib import Path
 
+import numpy as np
 import pandas as pd
 
 import jointwear as jw
@@ -124,6 +132,62 @@ def life_run(cycles: int) -> dict:
     }
 
 
+def band_run(direct: dict | None = None) -> dict:
+    """The million-turn example with its band (a process), against the scaled direct run.
+
+    ``direct``: a row of ``convergence`` for the direct run at the paper's coefficient; run
+    here if not given.
+    """
+    scale = 1000  # 8e-14 / 8e-17
+    with tempfile.TemporaryDirectory() as scratch:
+        out = Path(scratch) / "life"
+        k = f"{CLEARANCE}.wear_coefficient={WEAR_COEFFICIENTS[1]}"
+        args = ["life", str(FOURBAR), "--cycles", "1000000", "--out", str(out), "--set", k]
+        start = time.perf_counter()
+        process = subprocess.run([sys.executable, "-m", "jointwear", *args], capture_output=True,
+                                 cwd=ROOT)  # fmt: skip
+        wall = time.perf_counter() - start
+        if process.returncode != 0:
+            raise RuntimeError(process.stderr.decode() or process.stdout.decode())
+        summary = json.loads((out / "summary.json").read_text())
+        band_rows = len(pd.read_csv(out / "life_band.csv"))
+    if direct is None:
+        direct = convergence([], True)[-1]
+    joint = summary["clearance_joints"]["coupler_follower"]["band"]
+    half = joint["cycles_to_clearance_growth_50pct"]
+    reference = direct["growth_at"][50] * scale
+    held = half["low"] <= reference <= (half["high"] if half["high"] is not None else math.inf)
+    report = {
+        "command": "jointwear "
+        + " ".join([*args[:1], "examples/flores2009_fourbar.toml", *args[2:4], "--set", f"'{k}'"]),
+        "process_wall_s": wall,
+        "band": summary["band"],
+        "single_run_wall_s": summary["wall_s"],
+        "band_table_rows": band_rows,
+        "cycles_to_clearance_growth_50pct": half,
+        "clearance_growth_m": joint["clearance_growth_m"],
+        "max_wear_depth_journal_m": joint["max_wear_depth_journal_m"],
+        "direct_paper_k": direct,
+        "direct_50pct_scaled": reference,
+        "band_holds_direct": held,
+    }
+    runs = ", ".join(
+        f"{r['max_change']} {r['wall_s']:.1f} s ({r['status']})" for r in summary["band"]["runs"]
+    )
+    growth = joint["clearance_growth_m"]
+    print(
+        f"band, 1,000,000 turns at k 8e-17 1/Pa: 50% growth at {half['value']:,.0f} turns, band "
+        f"{half['low']:,.0f} to {half['high']:,.0f}; growth at 10^6 turns "
+        f"{growth['value'] * 1e6:.1f} um ({growth['low'] * 1e6:.1f} to "
+        f"{growth['high'] * 1e6:.1f}); direct run at 8e-14, scaled: 50% at "
+        f"{reference:,.0f} turns, growth {direct['growth_at_turn'] * 1e6:.1f} um at "
+        f"turn 1000: {'inside' if held else 'OUTSIDE'} the band; runs: {runs}; "
+        f"process {wall:.1f} s wall",
+        flush=True,
+    )
+    return report
+
+
 def convergence(changes: list[str], direct: bool) -> list[dict]:
     """Life runs of the four-bar over 1e6 turns per ``--max-change`` (and, if ``direct``, with
     no extrapolation), at the paper's wear coefficient and at one a thousand times smaller:
@@ -158,12 +222,21 @@ def convergence(changes: list[str], direct: bool) -> list[dict]:
                         for share in (25, 50, 75)
                     },
                     "clearance_growth_m": joint["clearance_growth_m"],
+                    "growth_at_turn": _growth_at(res.table, 1000),
                     "max_wear_depth_journal_m": joint["max_wear_depth_journal_m"],
                     "wall_s": time.perf_counter() - start,
                 }
             )
             print(_convergence_line(rows[-1]), flush=True)
     return rows
+
+
+def _growth_at(table: pd.DataFrame, turn: int) -> float | None:
+    """Clearance growth [m] at ``turn`` (linear between rows); None if not reached."""
+    cycles = table["cycles"].to_numpy()
+    if not len(cycles) or cycles[-1] < turn:
+        return None
+    return float(np.interp(turn, cycles, table["coupler_follower.clearance_growth_m"]))
 
 
 def _convergence_line(row: dict) -> str:
@@ -193,6 +266,9 @@ def main(argv: list[str] | None = None) -> dict:
         "0.5%%); minutes",
     )
     parser.add_argument("--direct", action="store_true", help="with it, the direct run (3 min)")
+    parser.add_argument(
+        "--band", action="store_true", help="the million-turn example's band against the direct run"
+    )
     parser.add_argument("--out", type=Path, default=ROOT / "benchmarks" / "studies.json")
     args = parser.parse_args(argv)
     jointwear("check", str(FOURBAR))  # a warm interpreter cache before anything is timed
@@ -216,6 +292,9 @@ def main(argv: list[str] | None = None) -> dict:
     if args.convergence or args.direct:
         changes = [c for c in args.convergence.split(",") if c]
         report["convergence"] = convergence(changes, args.direct)
+    if args.band:
+        rows = [r for r in report.get("convergence", []) if r["max_change"] == "direct"]
+        report["band"] = band_run(rows[0] if rows else None)
     args.out.write_text(json.dumps(report, indent=2))
     return report
 

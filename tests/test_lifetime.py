@@ -322,7 +322,7 @@ def test_resume_refuses_other_settings_and_empty_folders(tmp_path):
     with pytest.raises(jw.ModelError) as error:
         life(FOURBAR, tmp_path, cycles=3, overrides=FAST_WEAR, max_change="2%", resume=True)
     [line] = error.value.problems
-    assert line.startswith("max_change: '2%' differs from the '1%'")
+    assert line.startswith("max_change: '2%' differs from the '0.25%'")
     with pytest.raises(jw.ModelError, match=r"^max_growth: 0.5 differs from the 1.0"):
         life(FOURBAR, tmp_path, cycles=3, overrides=FAST_WEAR, max_growth=0.5, resume=True)
     with pytest.raises(jw.ModelError) as error:

@@ -1,7 +1,8 @@
 """Figures of a long-life wear run, from its tables (life.csv, profiles.csv).
 
 ``life_wear.png``: maximum wear depth per surface and effective clearance growth, peak contact
-force and the driver's torque range, against cycles; ``life_profiles.png``: the wear profiles
+force and the driver's torque range, against cycles, the clearance growth shaded over its
+uncertainty band where the run has one (life_band.csv); ``life_profiles.png``: the wear profiles
 of every clearance joint at a few cycle counts, in polar form (angles in each surface's body
 frame, as in the wear table).
 """
@@ -25,8 +26,18 @@ PROFILE_COUNTS = 5  # profiles drawn: at about 1/5, 2/5, ... of the cycles reach
 PLOT_ORDER = ("journal", "bearing")  # the journal first, as in the paper's Figs. 8-10
 
 
-def plot_life_wear(model: Model, table: pd.DataFrame, driver: str) -> Figure:
-    """Wear depth and clearance growth [µm], peak contact force [kN], torque range, vs cycles."""
+def plot_life_wear(
+    model: Model,
+    table: pd.DataFrame,
+    driver: str,
+    band: pd.DataFrame | None = None,
+    marks: dict | None = None,
+) -> Figure:
+    """Wear depth and clearance growth [µm], peak contact force [kN], torque range, vs cycles.
+
+    ``band`` (life_band.csv) shades the clearance growth's band; ``marks`` (the summary's
+    ``clearance_joints``) gives the band of the cycles to 50 % growth for the annotation.
+    """
     fig = Figure(figsize=(8.0, 9.0), layout="constrained")
     depth, force, torque = fig.subplots(3, 1, sharex=True)
     cycles = table["cycles"].to_numpy()
@@ -37,10 +48,17 @@ def plot_life_wear(model: Model, table: pd.DataFrame, driver: str) -> Figure:
             depth.plot(cycles, values, style, label=f"{name}: {surface}, deepest sector")
         growth = table[f"{name}.clearance_growth_m"] * UM
         line = depth.plot(cycles, growth, "-", lw=2.0, label=f"{name}: clearance growth")[0]
+        if band is not None:
+            low, high = (band[f"{name}.clearance_growth_{end}_m"] * UM for end in ("low", "high"))
+            depth.fill_between(
+                band["cycles"], low, high, color=line.get_color(), alpha=0.25, lw=0,
+                label=f"{name}: clearance growth, band of {band['runs'].max()} runs",
+            )  # fmt: skip
         mark = GROWTH_MARK * joint.clearance.radial_clearance * UM
         depth.axhline(mark, color=line.get_color(), ls=":", lw=1.0)
         reached = cycles_at(table["cycles"], growth, mark)
         text = f"{GROWTH_MARK:.0%} of c" + (f" at {reached:,.0f} cycles" if reached else "")
+        text += _band_text((marks or {}).get(name, {}).get("band"))
         depth.annotate(
             text, (cycles[0], mark), xytext=(2, 2), textcoords="offset points",
             color=line.get_color(), fontsize="small",
@@ -61,6 +79,15 @@ def plot_life_wear(model: Model, table: pd.DataFrame, driver: str) -> Figure:
         ax.grid(alpha=0.3)
     fig.suptitle(f"{model.name}: wear over {int(cycles[-1]):,} cycles")
     return fig
+
+
+def _band_text(entry: dict | None) -> str:
+    """`` (band low-high)`` of the cycles to 50 % growth, or "" without a band."""
+    if not entry or entry["cycles_to_clearance_growth_50pct"]["low"] is None:
+        return ""
+    at = entry["cycles_to_clearance_growth_50pct"]
+    high = "not reached" if at["high"] is None else f"{at['high']:,.0f}"
+    return f" (band {at['low']:,.0f} to {high})"
 
 
 def profile_updates(table: pd.DataFrame) -> list[int]:
@@ -100,8 +127,20 @@ def plot_life_profiles(model: Model, table: pd.DataFrame, profiles: pd.DataFrame
 
 
 def save_life_figures(
-    model: Model, driver: str, table: pd.DataFrame, profiles: pd.DataFrame, folder: Path
+    model: Model,
+    driver: str,
+    table: pd.DataFrame,
+    profiles: pd.DataFrame,
+    folder: Path,
+    band: pd.DataFrame | None = None,
+    marks: dict | None = None,
 ) -> list[Path]:
-    """Write life_wear.png and life_profiles.png into ``folder``; return their paths."""
-    figures = (plot_life_wear(model, table, driver), plot_life_profiles(model, table, profiles))
+    """Write life_wear.png and life_profiles.png into ``folder``; return their paths.
+
+    ``band`` and ``marks`` as for ``plot_life_wear``.
+    """
+    figures = (
+        plot_life_wear(model, table, driver, band, marks),
+        plot_life_profiles(model, table, profiles),
+    )
     return [save_png(fig, folder / name) for name, fig in zip(FIGURE_FILES, figures, strict=True)]

@@ -25,6 +25,7 @@ from ...results.run_state import RunState, load_run_state
 TABLE = "life.csv"
 PROFILES = "profiles.csv"
 SUMMARY = "summary.json"
+BAND_TABLE = "life_band.csv"  # the uncertainty band against cycles (``band``)
 MODEL = "model.json"
 FIGURES = "figures"
 FIGURE_FILES = ("life_wear.png", "life_profiles.png")  # what figures.life writes there
@@ -32,7 +33,7 @@ CHECKPOINTS = "checkpoint"
 CHECKPOINT = "checkpoint.json"
 PROFILE_COLUMNS = ["update", "cycles", *WEAR_COLUMNS]
 FILES = (  # the fixed names a life run writes, for ``jointwear.io.claim``
-    TABLE, PROFILES, SUMMARY, MODEL, f"{CHECKPOINTS}/{CHECKPOINT}",
+    TABLE, PROFILES, SUMMARY, BAND_TABLE, MODEL, f"{CHECKPOINTS}/{CHECKPOINT}",
     *(f"{FIGURES}/{name}" for name in FIGURE_FILES),
 )  # fmt: skip
 
@@ -72,6 +73,7 @@ def start_folder(folder: Path, columns: list[str], record: dict) -> None:
     make_folder(folder / CHECKPOINTS)
     remove(folder / CHECKPOINTS / CHECKPOINT)  # first: it names the states
     remove(folder / SUMMARY)
+    remove(folder / BAND_TABLE)
     for name in FIGURE_FILES:  # an earlier run's: never mix two runs
         remove(folder / FIGURES / name)
     for old in (folder / CHECKPOINTS).glob("state_*.npz"):
@@ -170,6 +172,11 @@ def _damaged(folder: Path, error: Exception) -> ModelError:
 def read_tables(folder: Path) -> tuple[pd.DataFrame, pd.DataFrame]:
     """life.csv and profiles.csv, numbers read back exactly."""
     return tuple(pd.read_csv(folder / name) for name in (TABLE, PROFILES))
+
+
+def write_band(folder: Path, table: pd.DataFrame) -> None:
+    """Write life_band.csv, whole or not at all."""
+    write_atomic(folder / BAND_TABLE, lambda p: table.to_csv(p, index=False, float_format="%.12g"))
 
 
 def write_summary(folder: Path, summary: dict) -> None:

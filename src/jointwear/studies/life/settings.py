@@ -29,7 +29,7 @@ class LifeSettings:
     measure_cycles: int = 1
     steady_tolerance: float = 0.05
     max_update_cycles: int = 20
-    max_change: str | float = "1%"
+    max_change: str | float = "0.25%"
     extrapolate: bool = True
     feedback: bool | None = None
     max_growth: float = 1.0

@@ -22,6 +22,9 @@ multibody systems with revolute joint wear", Wear 268 (2010) 643-652, a life run
    are updated, and the next run starts from the last state with them (``RunState.with_wear``);
 4. repeats 2-3 until ``cycles`` cycles are done.
 
+Then, unless ``band`` is empty, the same life run at each bound of ``band`` (``band``): the
+spread of these runs around the one at ``max_change`` is the prediction's uncertainty.
+
 A cycle is the period of the model's drivers (an angle driver at constant speed: 2 pi /
 speed; a harmonic function: 2 pi / angular frequency). The run stops early, with its status
 and a message, if a simulated run fails or is interrupted (Ctrl-C, SIGTERM: the update in
@@ -45,8 +48,10 @@ import pandas as pd
 from ...interrupts import stop_requests
 from ...model import Model, ModelError, load_model
 from ...results.run_state import RunState
-from ...status import INTERRUPTED, SUCCESS
+from ...status import FAILED, INTERRUPTED, SUCCESS
 from . import files
+from .band import BAND, band_summary, band_table, folder_name, run_band
+from .band import FOLDER as BAND_FOLDER
 from .records import life_summary, table_columns
 from .settings import LifeSettings, cycle_driver, with_feedback
 from .update import RESUME, LifeRun
@@ -96,7 +101,8 @@ def life(
     measure_cycles: int = 1,
     steady_tolerance: float = 0.05,
     max_update_cycles: int = 20,
-    max_change: str | float = "1%",
+    max_change: str | float = "0.25%",
+    band: Sequence[str | float] = BAND,
     extrapolate: bool = True,
     feedback: bool | None = None,
     max_growth: float = 1.0,
@@ -134,6 +140,11 @@ def life(
         Largest depth an update (simulated and extrapolated cycles) may add to a sector: a
         length (``"1 um"``, or a number [m]) or a share of the joint's current clearance
         (``"2%"``).
+    band
+        Further ``max_change`` bounds, each a life run of its own in ``out/band/<bound>/``,
+        whose spread around this run is its uncertainty band (``band`` module): in
+        life_band.csv, summary.json and the figure. Empty: this run alone. Not without
+        extrapolation.
     extrapolate
         False: no extrapolation, every cycle is simulated (a direct run, update by update).
     feedback
@@ -147,7 +158,8 @@ def life(
     figures
         Draw the figures into ``out/figures``.
     progress
-        Called after every update with the cycles done and ``cycles``.
+        Called after every update with the cycles done and to do, over all the runs of
+        the band (``cycles`` each).
 
     Returns
     -------
@@ -164,6 +176,12 @@ def life(
         extrapolate, feedback, max_growth,
     )  # fmt: skip
     problems = settings.problems()
+    bounds = list(dict.fromkeys(band)) if extrapolate else []
+    for bound in bounds:
+        try:
+            LifeSettings(cycles, max_change=bound).change_bound(0.0)
+        except ValueError as error:
+            problems.append(f"band: {error}")
     try:
         model = with_feedback(load_model(model_path, overrides), feedback)
     except ModelError as error:
@@ -188,12 +206,13 @@ def life(
     else:
         files.start_folder(folder, table_columns(model, driver), record)
         point = files.Checkpoint(0, 0, 0, 0.0, None)
+    total = cycles * (1 + len(bounds))
     with stop_requests() as stop:
         run = LifeRun(model, settings, driver, period, folder, record, point.wall_s, stop)
         while point.cycles < cycles and run.status == SUCCESS:
             point = run.update(point)
             if progress is not None and run.status == SUCCESS:
-                progress(point.cycles, cycles)
+                progress(point.cycles, total)
             if stop[0] and run.status == SUCCESS and point.cycles < cycles:
                 run.stop(INTERRUPTED, f"interrupted at {point.cycles} cycles{RESUME}")
     with stop_requests():  # the folder is completed whatever comes now
@@ -210,8 +229,64 @@ def life(
         }
         summary = life_summary(model, table, wear, outcome)
         files.write_summary(folder, summary)
-        if figures and len(table):
+    shaded = None
+    if bounds and run.status not in (INTERRUPTED, FAILED):
+
+        def companion(bound: str | float, where: Path) -> LifeResults:
+            done = cycles * (1 + bounds.index(bound))
+            return life(
+                model, where, cycles=cycles, settle_cycles=settle_cycles,
+                measure_cycles=measure_cycles, steady_tolerance=steady_tolerance,
+                max_update_cycles=max_update_cycles, max_change=bound, band=(),
+                max_growth=max_growth, figures=False,
+                resume=resume and (where / files.CHECKPOINTS / files.CHECKPOINT).is_file(),
+                progress=None if progress is None else lambda c, _: progress(done + c, total),
+            )  # fmt: skip
+
+        companions = run_band(bounds, folder, companion)
+        with stop_requests():
+            summary, shaded = _with_band(model, folder, table, summary, max_change, companions)
+            files.write_summary(folder, summary)
+    if figures and len(table):
+        with stop_requests():
             from ...figures.life import save_life_figures  # matplotlib only when asked for
 
-            save_life_figures(model, driver, table, profiles, folder / files.FIGURES)
+            save_life_figures(
+                model, driver, table, profiles, folder / files.FIGURES, band=shaded,
+                marks=summary["clearance_joints"],
+            )  # fmt: skip
     return LifeResults(table, profiles, summary, point.state)
+
+
+def _with_band(
+    model: Model,
+    folder: Path,
+    table: pd.DataFrame,
+    summary: dict,
+    max_change: str | float,
+    companions: dict[str, LifeResults],
+) -> tuple[dict, pd.DataFrame]:
+    """The summary with the band's entries, and life_band.csv (written into ``folder``)."""
+    runs = [{"max_change": str(max_change), "folder": ".", "status": summary["status"],
+             "cycles_reached": summary["cycles_reached"], "wall_s": summary["wall_s"]}]  # fmt: skip
+    for bound, res in companions.items():
+        where = f"{BAND_FOLDER}/{folder_name(bound)}"
+        runs.append({"max_change": bound, "folder": where, "status": res.status,
+                     "cycles_reached": res.summary["cycles_reached"],
+                     "wall_s": res.summary["wall_s"]})  # fmt: skip
+    ended = {b: r.table for b, r in companions.items() if r.status not in (INTERRUPTED, FAILED)}
+    top, joints = band_summary(model, table, ended, runs, summary["cycles"])
+    summary = {**summary, "band": {**top, "wall_s": sum(r["wall_s"] for r in runs)}}
+    for name, entry in joints.items():
+        summary["clearance_joints"][name]["band"] = entry
+    stopped = [b for b, r in companions.items() if r.status == INTERRUPTED]
+    if stopped and summary["status"] == SUCCESS:
+        summary["status"] = INTERRUPTED
+        summary["message"] = (
+            f"the band's run at max_change {stopped[0]} was interrupted; the band is that of "
+            f"the runs that ended{RESUME}"
+        )
+    shaded = band_table(model, table, list(ended.values())) if len(table) else None
+    if shaded is not None:
+        files.write_band(folder, shaded)
+    return summary, shaded
