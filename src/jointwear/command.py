@@ -34,8 +34,8 @@ def main(argv: list[str] | None = None) -> None:
         code = INTERRUPTED
     from .interrupts import cut_short
 
-    if cut_short():  # the interpreter's clean-up could crash on what the interrupt left
-        _flush()
+    if cut_short() or code == INTERRUPTED:  # the interpreter's clean-up could crash on what
+        _flush()  # the interrupt left half-built, or end the process on the interrupt again
         os._exit(code if isinstance(code, int) else 1 if code else 0)
     sys.exit(code)
 
@@ -55,6 +55,8 @@ def _run(argv: list[str] | None) -> int:
         _say("error: the input is nested too deeply to read (a model, --set, --vary or sweep file)")
         return 2
     except Exception as error:  # the last net: one line, never a traceback
+        if _caused_by_interrupt(error):  # Python wrapped it (a class built during an import)
+            raise KeyboardInterrupt from error
         if os.environ.get(DEBUG_VARIABLE):
             raise
         _say(
@@ -64,6 +66,18 @@ def _run(argv: list[str] | None) -> int:
         )
         return INTERNAL_ERROR
     return 0
+
+
+def _caused_by_interrupt(error: BaseException) -> bool:
+    """Whether a KeyboardInterrupt is among the causes or contexts of ``error``."""
+    seen: set[int] = set()
+    cause: BaseException | None = error
+    while cause is not None and id(cause) not in seen:
+        if isinstance(cause, KeyboardInterrupt):
+            return True
+        seen.add(id(cause))
+        cause = cause.__cause__ or cause.__context__
+    return False
 
 
 def _one_line(text: str) -> str:
