@@ -49,6 +49,10 @@ FOURBAR_IDEAL_COLUMNS = [
     "energy_potential",
     "constraint_violation",
 ]
+CLEARANCE_COLUMNS = (
+    *("fx", "fy", "ex", "ey", "delta", "fn", "ft", "vt", "theta_bearing", "theta_journal"),
+    *("p_max", "p_mean", "pv", "friction_power"),
+)  # a revolute clearance joint's own, then results.tribology's
 # As in the example file: coupler_follower has clearance; its columns follow the ideal joints'.
 FOURBAR_COLUMNS = [
     *_FOURBAR_BODIES,
@@ -57,7 +61,7 @@ FOURBAR_COLUMNS = [
         for joint in ("ground_crank", "crank_coupler", "ground_follower")
         for c in ("fx", "fy")
     ),
-    *(f"coupler_follower_{c}" for c in ("fx", "fy", "ex", "ey", "delta", "fn", "ft")),
+    *(f"coupler_follower_{c}" for c in CLEARANCE_COLUMNS),
     "energy_kinetic",
     "energy_potential",
     "energy_contact",

@@ -48,6 +48,7 @@ from .results.cycles import (
     settling,
 )
 from .results.run_state import RunState
+from .results.tribology import with_tribology
 from .status import status_message
 from .system import (
     System,
@@ -366,7 +367,7 @@ def simulate(
     summary["provenance"] = origin
     return Results(
         model=model,
-        timeseries=pd.DataFrame(data, columns=columns),
+        timeseries=with_tribology(model, pd.DataFrame(data, columns=columns)),
         events=pd.DataFrame(events, columns=["time", "event", "direction"]),
         summary=summary,
         final=final,

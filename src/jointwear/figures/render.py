@@ -1,10 +1,10 @@
-"""Figures to PNG bytes, part of them drawn by a helper process on another core.
+"""Figures to PNG bytes, drawn by helper processes on the machine's other cores.
 
 Drawing is matplotlib's layout and text work, a few tenths of a second per figure, so a run's
-seven or eight figures take seconds one after another. Within ``drawing_helper``, a second
-Python process is started at once (spawned, not forked: the run's threads make a fork unsafe);
-it imports matplotlib while the run computes, and then draws every other figure
-``render_pngs`` is given. Writing the files stays with the caller, so the file rule of
+seven or eight figures take seconds one after another. Within ``drawing_helper``, two Python
+processes are started at once (spawned, not forked: the run's threads make a fork unsafe);
+they import matplotlib while the run computes, and then draw the figures ``render_pngs`` is
+given, side by side. Writing the files stays with the caller, so the file rule of
 ``jointwear.io`` holds in one process.
 """
 
@@ -26,13 +26,14 @@ if TYPE_CHECKING:
 
 DPI = 150  # resolution of the PNGs [dots per inch]
 STOP_SIGNALS = {signal.SIGINT, signal.SIGTERM}
+HELPERS = min(2, os.cpu_count() or 1)  # processes that draw (the caller waits meanwhile)
 
-_helper: ProcessPoolExecutor | None = None  # the open drawing_helper's process
+_helper: ProcessPoolExecutor | None = None  # the open drawing_helper's processes
 
 
 @contextmanager
 def drawing_helper(wanted: bool = True) -> Iterator[None]:
-    """Within the block, a second process (started now) draws part of the figures.
+    """Within the block, helper processes (started now) draw the figures.
 
     Nothing is started unless ``wanted``, in the main thread, on a POSIX machine with two
     cores or more. The helper never acts on Ctrl-C or SIGTERM (this process does, as
@@ -48,9 +49,10 @@ def drawing_helper(wanted: bool = True) -> Iterator[None]:
         return
     with _signals_ignored_by_children():
         helper = ProcessPoolExecutor(
-            1, mp_context=multiprocessing.get_context("spawn"), initializer=_import_figures
+            HELPERS, mp_context=multiprocessing.get_context("spawn"), initializer=_import_figures
         )
-        helper.submit(int)  # starts the process now, while the caller computes
+        for _ in range(HELPERS):
+            helper.submit(int)  # starts the processes now, while the caller computes
     _helper = helper
     try:
         yield
@@ -80,15 +82,16 @@ def _signals_ignored_by_children() -> Iterator[None]:
 def render_pngs(drawings: Sequence[Callable[[], Figure]], dpi: int = DPI) -> list[bytes]:
     """Call each drawing and return its figure as PNG bytes, in the order given.
 
-    Within ``drawing_helper``, every other drawing is drawn by the helper process, which
-    receives it pickled; an exception a drawing raises there is raised here as it was.
+    Within ``drawing_helper``, the helper processes draw them, each receiving its drawing
+    pickled; an exception a drawing raises there is raised here as it was. Without helpers,
+    or if they are gone (killed), they are drawn here.
     """
     helper = _helper
     if helper is None or len(drawings) < 2:
         return [_png(draw, dpi) for draw in drawings]
     sent: dict[int, Future[bytes]] = {}
     try:
-        for i in range(1, len(drawings), 2):
+        for i in range(len(drawings)):
             sent[i] = helper.submit(_png, drawings[i], dpi)
     except BrokenProcessPool:  # the helper is gone (killed): drawn here instead
         sent.clear()

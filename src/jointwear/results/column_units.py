@@ -43,6 +43,13 @@ JOINT = {
     "film_fy": "N",
     "film_torque": "N m",
     "film_power": "W",
+    "vt": "m/s",  # sliding speed at the contact point
+    "theta_bearing": "rad",  # direction of the contact normal in the bearing's frame
+    "theta_journal": "rad",  # and in the journal's frame
+    "p_max": "Pa",  # Hertz line contact's peak pressure (results.tribology)
+    "p_mean": "Pa",
+    "pv": "Pa m/s",
+    "friction_power": "W",
     "lateral": "m",  # slider's offset across its guide
     "tilt": "rad",  # slider's tilt in its guide
 }  # <joint>_<quantity>; a slider's corner and edge forces are <joint>_fn_<contact> [N]

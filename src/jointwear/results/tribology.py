@@ -1,0 +1,55 @@
+"""Per revolute clearance joint, the time series a tribologist reads: pressure, pV, power.
+
+From each row's normal and friction force and sliding speed (the joint's own columns):
+
+- ``<joint>_p_max``, ``<joint>_p_mean`` [Pa]: the peak and mean pressure of a Hertz line
+  contact of the nominal radii under the normal force, p_max = 2 F / (pi b L) and
+  p_mean = F / (2 b L) over the half-width b (Johnson 1985, sec. 4.2). For the conformal and
+  elastic-foundation laws it is the Hertz estimate, not their own pressure field;
+- ``<joint>_pv`` [Pa m/s]: p_mean times the sliding speed, the usual wear severity of a
+  bearing (the product Archard's law integrates);
+- ``<joint>_friction_power`` [W]: |friction force x sliding speed|, the heat the contact
+  makes.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+
+from ..model import Model
+
+COLUMNS = ("p_max", "p_mean", "pv", "friction_power")  # added after each joint's own
+
+
+def with_tribology(model: Model, timeseries: pd.DataFrame) -> pd.DataFrame:
+    """``timeseries`` with each joint's ``COLUMNS`` after its contact angles' columns."""
+    extra = tribology_columns(model, timeseries)
+    if extra.empty:
+        return timeseries
+    after = {f"{j.name}_theta_journal": j.name for j in model.clearance_joints}
+    order = []
+    for column in timeseries.columns:
+        order.append(column)
+        if column in after:
+            order += [f"{after[column]}_{c}" for c in COLUMNS]
+    return pd.concat([timeseries, extra], axis=1)[order]
+
+
+def tribology_columns(model: Model, timeseries: pd.DataFrame) -> pd.DataFrame:
+    """The ``COLUMNS`` of every revolute clearance joint, one row per row of ``timeseries``."""
+    columns: dict[str, np.ndarray] = {}
+    for joint in model.clearance_joints:
+        c, name = joint.clearance, joint.name
+        force = timeseries[f"{name}_fn"].to_numpy()
+        speed = np.abs(timeseries[f"{name}_vt"].to_numpy())
+        patches = np.array([c.hertz_patch(f) for f in force]).reshape(-1, 2)
+        half_width, peak = patches[:, 0], patches[:, 1]
+        loaded = half_width > 0.0
+        mean = np.zeros_like(force)
+        mean[loaded] = force[loaded] / (2.0 * half_width[loaded] * c.width)
+        columns[f"{name}_p_max"] = peak
+        columns[f"{name}_p_mean"] = mean
+        columns[f"{name}_pv"] = mean * speed
+        columns[f"{name}_friction_power"] = np.abs(timeseries[f"{name}_ft"].to_numpy()) * speed
+    return pd.DataFrame(columns, index=timeseries.index)

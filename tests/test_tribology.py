@@ -1,0 +1,83 @@
+"""The tribologist's time series of a revolute clearance joint (``results.tribology``).
+
+Checked against what does not come from them: the Hertz line contact in closed form, and the
+friction energy and sliding distance the compiled loop sums step by step.
+"""
+
+import math
+
+import numpy as np
+import pytest
+from runs import EXAMPLES, simulate_ok
+
+from jointwear.results.column_units import column_unit
+
+JOINT = "rod_slider"
+ENGINE = EXAMPLES / "slider_crank_clearance.toml"
+
+
+@pytest.fixture(scope="module")
+def engine():
+    # Rows every 10 us: the integrals below are trapezoids over the rows.
+    return simulate_ok(ENGINE, ["solver.t_end=0.024", "solver.output_interval=1e-5"])
+
+
+def test_the_columns_follow_the_joints_own_with_their_units(engine):
+    columns = list(engine.timeseries.columns)
+    start = columns.index(f"{JOINT}_fx")
+    assert columns[start : start + 14] == [
+        f"{JOINT}_{c}"
+        for c in ("fx", "fy", "ex", "ey", "delta", "fn", "ft", "vt", "theta_bearing",
+                  "theta_journal", "p_max", "p_mean", "pv", "friction_power")
+    ]  # fmt: skip
+    units = [column_unit(c, engine.model) for c in columns[start + 7 : start + 14]]
+    assert units == ["m/s", "rad", "rad", "Pa", "Pa", "Pa m/s", "W"]
+
+
+def test_pressure_is_the_hertz_line_contact_of_the_normal_force(engine):
+    c = engine.model.joint(JOINT).clearance
+    df = engine.timeseries
+    force = df[f"{JOINT}_fn"].to_numpy()
+    loaded = force > 0.0
+    assert loaded.sum() > 100
+    # Johnson (1985) sec. 4.2, from the radii and moduli of the model file:
+    r_star = c.bearing_radius * c.journal_radius / (c.bearing_radius - c.journal_radius)
+    (e_b, e_j), (nu_b, nu_j) = c.moduli, c.poisson_ratios
+    e_star = 1.0 / ((1.0 - nu_b**2) / e_b + (1.0 - nu_j**2) / e_j)
+    b = np.sqrt(4.0 * force[loaded] * r_star / (math.pi * c.width * e_star))
+    p_max = df[f"{JOINT}_p_max"].to_numpy()[loaded]
+    np.testing.assert_allclose(p_max, 2.0 * force[loaded] / (math.pi * b * c.width), rtol=1e-12)
+    p_mean = df[f"{JOINT}_p_mean"].to_numpy()
+    np.testing.assert_allclose(p_mean[loaded], math.pi / 4.0 * p_max, rtol=1e-12)
+    assert not p_mean[~loaded].any() and not df[f"{JOINT}_pv"].to_numpy()[~loaded].any()
+    speed = np.abs(df[f"{JOINT}_vt"].to_numpy())
+    np.testing.assert_allclose(df[f"{JOINT}_pv"], p_mean * speed, rtol=1e-12)
+
+
+def test_friction_power_and_sliding_speed_integrate_to_the_loops_totals(engine):
+    """The loop sums friction energy and sliding distance over its steps' midpoints; the rows
+    sample the same motion every 10 us. Impacts last tens of microseconds, so the two sums
+    agree to about a percent, not to rounding: 3 % is asked."""
+    df = engine.timeseries
+    whole = engine.summary["clearance_joints"][JOINT]["whole_run"]
+    time = df["time"].to_numpy()
+    energy = np.trapezoid(df[f"{JOINT}_friction_power"].to_numpy(), time)
+    assert energy == pytest.approx(whole["energy_dissipated_friction_j"], rel=0.03)
+    in_contact = df[f"{JOINT}_fn"].to_numpy() > 0.0
+    sliding = np.trapezoid(np.abs(df[f"{JOINT}_vt"].to_numpy()) * in_contact, time)
+    assert sliding == pytest.approx(whole["sliding_distance_m"], rel=0.03)
+
+
+def test_contact_angles_are_the_eccentricity_in_each_bodys_frame(engine):
+    df = engine.timeseries
+    joint = engine.model.joint(JOINT)
+    # Along the line of centres; a centred journal (the first rows) takes its velocity's.
+    off_centre = np.hypot(df[f"{JOINT}_ex"], df[f"{JOINT}_ey"]) > 1e-3 * 5e-4
+    assert off_centre.mean() > 0.9
+    df = df[off_centre]
+    direction = np.arctan2(df[f"{JOINT}_ey"], df[f"{JOINT}_ex"])
+    for surface, body in (("bearing", joint.bodies[0]), ("journal", joint.bodies[1])):
+        expected = direction - df[f"phi_{body}"]
+        got = df[f"{JOINT}_theta_{surface}"]
+        gap = np.angle(np.exp(1j * (got - expected)))  # wrapped to (-pi, pi]
+        assert np.abs(gap).max() < 1e-9, surface
