@@ -51,7 +51,7 @@ FOURBAR_IDEAL_COLUMNS = [
 ]
 CLEARANCE_COLUMNS = (
     *("fx", "fy", "ex", "ey", "delta", "fn", "ft", "vt", "theta_bearing", "theta_journal"),
-    *("p_max", "p_mean", "pv", "friction_power"),
+    *("delta_dot", "fn_elastic", "p_max", "p_mean", "pv", "friction_power", "damping_power"),
 )  # a revolute clearance joint's own, then results.tribology's
 # As in the example file: coupler_follower has clearance; its columns follow the ideal joints'.
 FOURBAR_COLUMNS = [

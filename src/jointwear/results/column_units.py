@@ -50,6 +50,9 @@ JOINT = {
     "p_mean": "Pa",
     "pv": "Pa m/s",
     "friction_power": "W",
+    "delta_dot": "m/s",  # penetration rate
+    "fn_elastic": "N",  # the normal force's elastic (undamped) part
+    "damping_power": "W",
     "lateral": "m",  # slider's offset across its guide
     "tilt": "rad",  # slider's tilt in its guide
 }  # <joint>_<quantity>; a slider's corner and edge forces are <joint>_fn_<contact> [N]

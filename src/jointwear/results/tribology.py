@@ -9,7 +9,10 @@ From each row's normal and friction force and sliding speed (the joint's own col
 - ``<joint>_pv`` [Pa m/s]: p_mean times the sliding speed, the usual wear severity of a
   bearing (the product Archard's law integrates);
 - ``<joint>_friction_power`` [W]: |friction force x sliding speed|, the heat the contact
-  makes.
+  makes;
+- ``<joint>_damping_power`` [W]: the normal force's damped part times the penetration rate,
+  (F_n - F_elastic) d(delta)/dt, what the contact law's hysteresis dissipates (the compiled
+  loop sums the same product into the summary's ``energy_dissipated_damping_j``).
 """
 
 from __future__ import annotations
@@ -17,17 +20,18 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
+from ..kernels.elements.journal import OUTPUT_NAMES
 from ..model import Model
 
-COLUMNS = ("p_max", "p_mean", "pv", "friction_power")  # added after each joint's own
+COLUMNS = ("p_max", "p_mean", "pv", "friction_power", "damping_power")  # after the joint's own
 
 
 def with_tribology(model: Model, timeseries: pd.DataFrame) -> pd.DataFrame:
-    """``timeseries`` with each joint's ``COLUMNS`` after its contact angles' columns."""
+    """``timeseries`` with each joint's ``COLUMNS`` after its own columns."""
     extra = tribology_columns(model, timeseries)
     if extra.empty:
         return timeseries
-    after = {f"{j.name}_theta_journal": j.name for j in model.clearance_joints}
+    after = {f"{j.name}_{OUTPUT_NAMES[-1]}": j.name for j in model.clearance_joints}
     order = []
     for column in timeseries.columns:
         order.append(column)
@@ -52,4 +56,7 @@ def tribology_columns(model: Model, timeseries: pd.DataFrame) -> pd.DataFrame:
         columns[f"{name}_p_mean"] = mean
         columns[f"{name}_pv"] = mean * speed
         columns[f"{name}_friction_power"] = np.abs(timeseries[f"{name}_ft"].to_numpy()) * speed
+        damped = force - timeseries[f"{name}_fn_elastic"].to_numpy()
+        rate = timeseries[f"{name}_delta_dot"].to_numpy()
+        columns[f"{name}_damping_power"] = np.where(force > 0.0, damped * rate, 0.0)
     return pd.DataFrame(columns, index=timeseries.index)

@@ -108,8 +108,24 @@ C_FILM_POWER = 16  # power dissipated in the film [W]
 C_FILM_TJ = 17  # film's shear torque on the journal [N m]
 C_FILM_TB = 18  # film's shear torque on the bearing [N m]
 N_CONTACT = 19
-OUTPUTS = (C_FX, C_FY, C_EX, C_EY, C_DELTA, C_FN, C_FT, C_VT, C_THETA_B, C_THETA_J)  # in order
-OUTPUT_NAMES = ("fx", "fy", "ex", "ey", "delta", "fn", "ft", "vt", "theta_bearing", "theta_journal")
+OUTPUTS = (
+    C_FX,
+    C_FY,
+    C_EX,
+    C_EY,
+    C_DELTA,
+    C_FN,
+    C_FT,
+    C_VT,
+    C_THETA_B,
+    C_THETA_J,
+    C_DDOT,
+    C_ELASTIC,
+)
+OUTPUT_NAMES = (
+    *("fx", "fy", "ex", "ey", "delta", "fn", "ft", "vt", "theta_bearing", "theta_journal"),
+    *("delta_dot", "fn_elastic"),
+)  # the time-series columns of OUTPUTS, in order
 FILM_OUTPUTS = (C_EPS, C_FILM_MIN, C_FILM_X, C_FILM_Y, C_FILM_TJ, C_FILM_POWER)  # lubricated
 FILM_OUTPUT_NAMES = ("eps", "film_min", "film_fx", "film_fy", "film_torque", "film_power")
 
