@@ -1,5 +1,7 @@
 """Clearance figures (paper Figs. 7-10) and the mechanism animation: files and plotted data."""
 
+from dataclasses import replace
+
 import numpy as np
 import pytest
 from PIL import Image
@@ -165,3 +167,11 @@ def test_figures_drawn_by_the_helper_process_are_those_drawn_here(fourbar, ideal
     assert [p.name for p in helped] == [p.name for p in alone]
     for mine, theirs in zip(alone, helped, strict=True):
         assert mine.read_bytes() == theirs.read_bytes(), mine.name
+
+
+def test_only_the_papers_model_is_titled_after_the_papers_figures(fourbar, ideal):
+    from jointwear.figures.clearance import plot_orbit
+
+    assert plot_orbit(fourbar).get_suptitle().endswith("(paper Fig. 7d)")
+    other = replace(fourbar, model=fourbar.model.with_values({"name": "my_engine"}))
+    assert "paper" not in plot_orbit(other).get_suptitle()

@@ -250,3 +250,13 @@ def test_revolute_and_slider_clearances_draw_both_sets(tmp_path):
         ax.lines[-1].get_ydata(),
         both.wear[both.wear["surface"] == "journal"].sort_values("sector")["depth_m"] * 1e6,
     )
+
+
+def test_one_turn_leaves_out_bodies_that_do_not_turn():
+    from jointwear.figures.run import plot_cycle
+
+    engine = simulate_ok(EXAMPLES / "slider_crank.toml", ["solver.t_end=0.03"])
+    labels = [line.get_label() for line in plot_cycle(engine).axes[0].get_lines()]
+    assert labels[0] == "rod"  # it turns; the slider only slides
+    assert "slider" not in labels
+    assert np.abs(engine.timeseries["omega_slider"]).max() < 1e-9

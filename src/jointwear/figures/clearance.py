@@ -32,6 +32,14 @@ SURFACES = ("journal", "bearing")  # the paper's Figs. 8-10 show the journal fir
 MM = 1e3  # [mm/m]
 
 
+PAPER_MODEL = "flores2009_fourbar"  # the paper's four-bar (examples/flores2009_fourbar*.toml)
+
+
+def _paper(results: Results, figure: str) -> str:
+    """The title's note " (paper Fig. N)" for the paper's own model; "" for any other."""
+    return f" (paper Fig. {figure})" if results.model.name.startswith(PAPER_MODEL) else ""
+
+
 def _clearance_joints(results: Results) -> tuple[RevoluteJoint, ...]:
     """The revolute clearance joints (translational ones have figures of their own: slider.py)."""
     return results.model.clearance_joints
@@ -150,7 +158,9 @@ def plot_dynamics(results: Results, ideal: Results | None = None) -> Figure:
     else:
         axes[-1].set_xlabel("time [s]")
         when = "whole run"
-    fig.suptitle(f"{results.model.name}: {results.model.bodies[-1].name}, {when} (paper Fig. 7a-c)")
+    fig.suptitle(
+        f"{results.model.name}: {results.model.bodies[-1].name}, {when}{_paper(results, '7a-c')}"
+    )
     return fig
 
 
@@ -186,7 +196,7 @@ def plot_orbit(results: Results) -> Figure:
         ax.set_title(f"{name}\njournal ({joint.bodies[1]}) in bearing ({joint.bodies[0]})")
         ax.grid(alpha=0.3)
         ax.legend(loc="upper right", fontsize="small")
-    fig.suptitle(f"{results.model.name}: journal-centre orbit (paper Fig. 7d)")
+    fig.suptitle(f"{results.model.name}: journal-centre orbit{_paper(results, '7d')}")
     return fig
 
 
@@ -243,7 +253,7 @@ def plot_wear_sectors(results: Results) -> Figure:
             ax.set_ylim(bottom=0.0)
             ax.grid(alpha=0.3)
         row[0].legend(loc="upper left", fontsize="small")
-    fig.suptitle(f"{results.model.name}: wear depth per sector (paper Fig. 8)")
+    fig.suptitle(f"{results.model.name}: wear depth per sector{_paper(results, '8')}")
     return fig
 
 
@@ -268,7 +278,7 @@ def plot_wear_polar(results: Results) -> Figure:
                 f"wear depth [µm] {_turns_label(results, t_end)}",
                 fontsize="medium",
             )
-    fig.suptitle(f"{results.model.name}: total wear per sector (paper Fig. 9)")
+    fig.suptitle(f"{results.model.name}: total wear per sector{_paper(results, '9')}")
     return fig
 
 
@@ -339,7 +349,7 @@ def plot_wear_profile(results: Results) -> Figure:
             ax.grid(alpha=0.3)
             ax.legend(loc="upper right", fontsize="small")
     fig.suptitle(
-        f"{results.model.name}: initial and worn profiles, wear exaggerated (paper Fig. 10)"
+        f"{results.model.name}: initial and worn profiles, wear exaggerated{_paper(results, '10')}"
     )
     return fig
 

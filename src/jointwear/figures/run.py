@@ -16,6 +16,7 @@ from ..results import Results
 from ..results.energy_balance import energy_balance, unaccounted
 
 CRANK_FUNCTIONS = ("constant_speed",)  # driver functions that turn a crank
+STILL_SPEED = 1e-9  # [rad/s] a body whose angular velocity stays below this does not turn
 
 
 def crank_driver(results: Results) -> tuple[str, str, float] | None:
@@ -44,7 +45,11 @@ def plot_cycle(results: Results) -> Figure:
     turn = _last_turn(results.timeseries, speed)
     angle = np.degrees(turn[f"phi_{driven}"].to_numpy()) % 360.0
     order = np.argsort(angle)
-    bodies = [b.name for b in results.model.bodies if b.name != driven]
+    bodies = [  # those that turn: a piston's angular velocity is zero throughout
+        b.name
+        for b in results.model.bodies
+        if b.name != driven and np.abs(turn[f"omega_{b.name}"]).max() > STILL_SPEED
+    ]
     fig = Figure(figsize=(7.0, 8.0), layout="constrained")
     axes = fig.subplots(3, 1, sharex=True)
     for body in bodies:
@@ -57,7 +62,8 @@ def plot_cycle(results: Results) -> Figure:
     axes[2].set_xlabel(f"{driven} angle [deg]")
     axes[2].set_xlim(0.0, 360.0)
     axes[2].set_xticks(np.arange(0, 361, 45))
-    axes[0].legend(loc="best")
+    if bodies:
+        axes[0].legend(loc="best")
     for ax in axes:
         ax.grid(alpha=0.3)
         ax.axhline(0.0, color="0.6", lw=0.6)
