@@ -141,3 +141,18 @@ def test_an_unfinished_ideal_companion_is_reported_not_saved(tmp_path, monkeypat
     assert results.status == "success"
     assert results.summary["ideal_comparison"] == {"folder": "ideal", "status": "interrupted"}
     assert not (tmp_path / "out" / "ideal").exists()
+
+
+def test_the_radial_clearance_can_be_given_directly(tmp_path):
+    path = "joints.coupler_follower.clearance"
+    model = jw.load_model(FOURBAR, [f"{path}.radial_clearance=0.1 mm"])
+    c = model.joint("coupler_follower").clearance
+    assert c.journal_radius == pytest.approx(9.8e-3, rel=1e-12)  # the file's, kept
+    assert c.radial_clearance == pytest.approx(1e-4, rel=1e-9)
+    for value, words in (("-1 mm", "must be > 0"), ("3 kg", "has units of mass")):
+        with pytest.raises(jw.ModelError, match=words):
+            jw.load_model(FOURBAR, [f"{path}.radial_clearance={value}"])
+    # A sweep over it: the summary's clearance is the one asked for, case by case.
+    swept = jw.sweep(FOURBAR, tmp_path, vary={f"{path}.radial_clearance": ["0.1 mm", "0.3 mm"]},
+                     overrides=["solver.t_end=0.004"], workers=1, figures=False)  # fmt: skip
+    np.testing.assert_allclose(swept.table["coupler_follower.radial_clearance_m"], [1e-4, 3e-4])

@@ -32,7 +32,7 @@ from ..kernels.laws.normal import (
 from ..kernels.laws.registry import Key, Law, by_name, family_keys
 from ..kernels.laws.wear import WEAR_LAWS as WEAR_FAMILY
 from ..kernels.laws.wear import hertz_line_contact
-from ..units import Length, Pressure, Speed, Viscosity, WearCoefficient
+from ..units import Length, Pressure, Speed, Viscosity, WearCoefficient, to_si
 from .tables import Number, Table, one_of
 
 NORMAL_LAWS = by_name(NORMAL_FAMILY)
@@ -270,6 +270,24 @@ class Clearance(ContactKeys):
     journal_wear_share: Annotated[Number, Ge(0), Le(1)] = 0.5
     wear_distribution: Annotated[str, one_of(WEAR_DISTRIBUTIONS, "wear distribution")] = "hertz"
     sectors: Annotated[int, Ge(4), Le(100_000)] = 36
+
+    @model_validator(mode="before")
+    @classmethod
+    def _radial_clearance(cls, data: object) -> object:
+        """Read ``radial_clearance`` c as the bearing radius journal_radius + c [m]."""
+        if not isinstance(data, dict) or "radial_clearance" not in data:
+            return data
+        rest = {key: value for key, value in data.items() if key != "radial_clearance"}
+        if "journal_radius" not in data:
+            raise ValueError(
+                "radial_clearance needs journal_radius: the bearing radius is the journal's "
+                "plus the clearance"
+            )
+        clearance = to_si(data["radial_clearance"], "[length]", "radial_clearance")
+        journal = to_si(data["journal_radius"], "[length]", "journal_radius")
+        if not clearance > 0.0:
+            raise ValueError(f"radial_clearance: got {clearance:g} m; must be > 0")
+        return {**rest, "bearing_radius": journal + clearance}
 
     @model_validator(mode="after")
     def _consistent(self) -> "Clearance":
