@@ -8,6 +8,7 @@ physics.
 import contextlib
 import importlib
 import json
+import math
 import os
 import shutil
 import signal
@@ -512,3 +513,49 @@ def test_a_worker_that_dies_ends_the_sweep_with_errors_not_a_hang(tmp_path):
     table = pd.read_parquet(out / "sweep.parquet")
     assert (table["status"] == "error").all()
     assert table["error"].str.startswith("BrokenProcessPool").all()
+
+
+# linked variations ------------------------------------------------------------------------
+
+SPEED = "drivers.motor.function.speed"
+
+
+def test_linked_paths_step_together_as_one_axis_of_the_product():
+    link = {SPEED: ["2500 rpm", "5000 rpm"], "bodies.crank.mass": ["1", "2"]}
+    cases = make_cases({"solver.integrator": ["abm", "dopri5"]}, link)
+    assert [c.values for c in cases] == [
+        {"solver.integrator": i, SPEED: s, "bodies.crank.mass": m}
+        for i in ("abm", "dopri5")
+        for s, m in (("2500 rpm", "1"), ("5000 rpm", "2"))
+    ]
+    assert cases[0].id == "integrator=abm__speed=2500_rpm__mass=1"
+
+
+@pytest.mark.parametrize(
+    ("link", "vary", "words"),
+    [
+        ({SPEED: ["1", "2"], "bodies.crank.mass": ["1"]}, {}, "need as many each; got"),
+        ({SPEED: ["1", "2"]}, {}, "one path alone; use --vary, or link two"),
+        ({SPEED: ["1", "2"], "bodies.crank.mass": ["1", "2"]}, {SPEED: ["3"]}, "also varied"),
+    ],
+)
+def test_links_that_do_not_fit_are_refused(link, vary, words, tmp_path):
+    with pytest.raises(ModelError, match=words):
+        jw.sweep(FOURBAR, tmp_path, vary=vary, link=link, workers=1)
+    assert not any(tmp_path.iterdir())  # refused before anything is written
+
+
+def test_link_on_the_command_line_and_in_a_sweep_file(tmp_path):
+    result = invoke(FOURBAR, "--out", tmp_path / "cli", "--t-end", "0.003",
+                    "--workers", 1, "--no-figures", "--link", f"{SPEED}=2500 rpm,5000 rpm",
+                    "--link", "bodies.crank.mass=1,2")  # fmt: skip
+    assert result.exit_code == 0, result.output
+    table = pd.read_csv(tmp_path / "cli" / "sweep.csv")
+    assert table[SPEED].tolist() == pytest.approx([2500 * math.pi / 30, 5000 * math.pi / 30])
+    assert table["bodies.crank.mass"].tolist() == [1.0, 2.0]
+    sweep_file = tmp_path / "sweep.toml"
+    sweep_file.write_text(f'[link]\n"{SPEED}" = ["2500 rpm", "5000 rpm"]\n'
+                          '"bodies.crank.mass" = [1, 2]\n')  # fmt: skip
+    plan = make_plan([], sweep_file)
+    assert plan.link == {SPEED: ['"2500 rpm"', '"5000 rpm"'], "bodies.crank.mass": ["1", "2"]}
+    assert plan.vary == {}

@@ -20,9 +20,19 @@ def sweep(
             "--vary", help="Vary a model value: dotted.path=V1,V2,... (repeatable; all combined)."
         ),
     ] = None,
+    link: Annotated[
+        list[str] | None,
+        typer.Option(
+            "--link",
+            help="Vary model values together: dotted.path=V1,V2,... (repeatable; the linked "
+            "paths step through their values as one, combined with --vary).",
+        ),
+    ] = None,
     sweep_file: Annotated[
         Path | None,
-        typer.Option("--file", help="Sweep file: TOML with [vary] (path = [values]) and [set]."),
+        typer.Option(
+            "--file", help="Sweep file: TOML with [vary] and [link] (path = [values]) and [set]."
+        ),
     ] = None,
     overrides: Overrides = None,
     t_end: EndTime = None,
@@ -39,7 +49,7 @@ def sweep(
         bool, typer.Option("--figures/--no-figures", help="Draw comparison figures.")
     ] = True,
 ) -> None:
-    """Run MODEL for every combination of the varied values; tabulate and compare the cases.
+    """Run MODEL for every combination of the varied (and linked) values; compare the cases.
 
     OUT gets cases/<case>/ (a results folder per case), sweep.csv and sweep.parquet (one row
     per case) and figures/. Running the same sweep again skips the cases already finished.
@@ -52,13 +62,14 @@ def sweep(
     bar = SweepProgress()
     named: dict[str, str] = {}  # solver.t_end's problems are --t-end's, unless it is varied
     try:
-        plan = make_plan(vary or [], sweep_file, end_time(overrides, t_end))
-        if t_end is not None and T_END not in plan.vary:
+        plan = make_plan(vary or [], sweep_file, end_time(overrides, t_end), link or [])
+        if t_end is not None and T_END not in plan.vary and T_END not in plan.link:
             named = {T_END: "--t-end"}
         results = run_sweep(
             model,
             out_dir,
             vary=plan.vary,
+            link=plan.link,
             overrides=plan.overrides,
             cycles=cycles,
             scheduler=scheduler,

@@ -3,7 +3,9 @@
 A sweep varies model values addressed by the same dotted paths as ``--set``
 (``joints.coupler_follower.clearance.friction_coefficient``); each path gets a list of values
 written as ``--set`` would take them (``0.05``, ``"0.1 mm"``, ``abm``). The cases are the
-Cartesian product of the lists, the first path varying slowest. Each case is named by its
+Cartesian product of the lists, the first path varying slowest; linked paths (``--link``, a
+sweep file's ``[link]``) step through their lists together, as one more axis of the product
+(a crank speed with the load frequency it drives). Each case is named by its
 varied values (``friction_coefficient=0.05__bearing_radius=10.1_mm``), a name that is stable
 from one run of the same sweep to the next and safe as a folder name.
 """
@@ -18,7 +20,7 @@ import os
 import re
 import tomllib
 from collections.abc import Iterable, Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 from ...model import Model
@@ -27,7 +29,7 @@ from ...model.files import too_deep
 from ...model.overrides import toml_value
 
 VARY_EXAMPLE = "joints.coupler_follower.clearance.friction_coefficient=0.05,0.1"
-SWEEP_FILE_KEYS = ("vary", "set")
+SWEEP_FILE_KEYS = ("vary", "link", "set")
 MAX_CASES = 10_000  # cases in one sweep: beyond this, a mistyped --vary rather than a plan
 MAX_ID_LENGTH = 120  # characters of a case name (a folder name) before it is shortened
 _UNSAFE = re.compile(r"[^A-Za-z0-9.+-]+")  # characters a case name does not keep
@@ -43,10 +45,13 @@ class Plan:
         Dotted path -> value texts, as ``--set`` takes them (``"0.1 mm"``, ``"0.05"``).
     overrides
         ``dotted.path=value`` settings common to every case.
+    link
+        Dotted path -> value texts, lists of one length, stepped through together.
     """
 
     vary: dict[str, list[str]]
     overrides: list[str]
+    link: dict[str, list[str]] = field(default_factory=dict)
 
 
 @dataclass(frozen=True)
@@ -62,8 +67,8 @@ class Case:
         return [f"{path}={text}" for path, text in self.values.items()]
 
 
-def parse_vary(options: Iterable[str]) -> dict[str, list[str]]:
-    """Read ``--vary PATH=V1,V2,...`` options.
+def parse_vary(options: Iterable[str], name: str = "--vary") -> dict[str, list[str]]:
+    """Read ``--vary PATH=V1,V2,...`` options (or those of option ``name``, ``--link``).
 
     Commas inside brackets or quotes belong to their value, so arrays
     (``youngs_modulus=[2.07e11, 1.1e11],2.07e11``) and quoted strings can be varied too.
@@ -80,9 +85,9 @@ def parse_vary(options: Iterable[str]) -> dict[str, list[str]]:
         path = path.strip()
         values = [value.strip() for value in _split_values(text)]
         if not equals or not path or not all(path.split(".")) or not all(values):
-            problems.append(f"--vary {option}: expected PATH=V1,V2,..., e.g. {VARY_EXAMPLE}")
+            problems.append(f"{name} {option}: expected PATH=V1,V2,..., e.g. {VARY_EXAMPLE}")
         elif path in vary:
-            problems.append(f"--vary {option}: {path} is varied twice; give its values once")
+            problems.append(f"{name} {option}: {path} is varied twice; give its values once")
         else:
             vary[path] = values
     if problems:
@@ -135,6 +140,35 @@ def check_vary(vary: Mapping[str, Sequence[str]]) -> None:
         raise ModelError(problems)
 
 
+def check_link(link: Mapping[str, Sequence[str]], vary: Mapping[str, Sequence[str]]) -> None:
+    """Refuse linked lists of different lengths, and a path both linked and varied.
+
+    Raises
+    ------
+    ModelError
+        One line per problem.
+    """
+    problems = [
+        f"--link {path}: also varied (--vary); give it in one place"
+        for path in link
+        if path in vary
+    ]
+    for path, texts in link.items():
+        if isinstance(texts, str) or not isinstance(texts, Sequence) or not texts:
+            problems.append(f"--link {path}: expected a non-empty list of values")
+    lengths = {path: len(texts) for path, texts in link.items() if not isinstance(texts, str)}
+    if len(set(lengths.values())) > 1:
+        listed = ", ".join(f"{path} {n}" for path, n in lengths.items())
+        problems.append(
+            f"--link: linked paths step through their values together and need as many each; "
+            f"got {listed}"
+        )
+    if len(link) == 1:
+        problems.append(f"--link {next(iter(link))}: one path alone; use --vary, or link two")
+    if problems:
+        raise ModelError(problems)
+
+
 def value_text(value: object) -> str:
     """Write a value as ``--set`` reads it: strings as given, anything else as TOML."""
     if isinstance(value, str):
@@ -157,9 +191,10 @@ def _toml(value: object) -> str:
 
 
 def read_sweep_file(path: str | os.PathLike) -> Plan:
-    """Read a sweep file: TOML with a ``[vary]`` table and an optional ``[set]`` table.
+    """Read a sweep file: TOML with ``[vary]``, ``[link]`` and ``[set]`` tables.
 
-    ``[vary]`` maps dotted paths to lists of values, ``[set]`` dotted paths to values; keys
+    ``[vary]`` and ``[link]`` map dotted paths to lists of values (linked lists all of one
+    length), ``[set]`` dotted paths to values; keys
     may be quoted (``"solver.t_end" = 0.02``) or nested tables (``[set.solver]``).
 
     Raises
@@ -193,10 +228,16 @@ def read_sweep_file(path: str | os.PathLike) -> Plan:
             problems.append(f"{path}: vary.{dotted}: expected a non-empty array of values")
         else:
             vary[dotted] = [_toml(value) for value in values]
+    link: dict[str, list[str]] = {}
+    for dotted, values in _leaves(data.get("link", {}), stop_at_lists=True):
+        if not isinstance(values, list) or not values:
+            problems.append(f"{path}: link.{dotted}: expected a non-empty array of values")
+        else:
+            link[dotted] = [_toml(value) for value in values]
     overrides = [f"{dotted}={_toml(value)}" for dotted, value in _leaves(data.get("set", {}))]
     if problems:
         raise ModelError(problems)
-    return Plan(vary=vary, overrides=overrides)
+    return Plan(vary=vary, overrides=overrides, link=link)
 
 
 def _leaves(
@@ -218,8 +259,9 @@ def make_plan(
     vary_options: Sequence[str] = (),
     sweep_file: str | os.PathLike | None = None,
     overrides: Sequence[str] = (),
+    link_options: Sequence[str] = (),
 ) -> Plan:
-    """Merge a sweep file (if any) with ``--vary`` and ``--set`` options given with it.
+    """Merge a sweep file (if any) with ``--vary``, ``--link`` and ``--set`` options.
 
     The options' ``--set`` values come after the file's ``[set]``, so they win.
 
@@ -230,33 +272,51 @@ def make_plan(
     """
     plan = read_sweep_file(sweep_file) if sweep_file is not None else Plan({}, [])
     given = parse_vary(vary_options)
+    linked = {
+        path.removeprefix("--vary "): values for path, values in parse_vary(link_options).items()
+    }
     twice = [
         f"--vary {path}: also varied in {sweep_file}; vary it in one place"
         for path in given
-        if path in plan.vary
+        if path in plan.vary or path in plan.link
     ]
+    if linked and plan.link:
+        twice.append(f"--link: {sweep_file} links paths already ([link]); link them in one place")
     if twice:
         raise ModelError(twice)
-    return Plan(vary={**plan.vary, **given}, overrides=[*plan.overrides, *overrides])
+    return Plan(
+        vary={**plan.vary, **given},
+        overrides=[*plan.overrides, *overrides],
+        link=linked or plan.link,
+    )
 
 
-def make_cases(vary: Mapping[str, Sequence[str]]) -> list[Case]:
+def make_cases(
+    vary: Mapping[str, Sequence[str]], link: Mapping[str, Sequence[str]] | None = None
+) -> list[Case]:
     """The Cartesian product of the varied values, each case named by its values.
 
     Parameters
     ----------
     vary
         Dotted path -> value texts (``parse_vary``), in the order they vary (first slowest).
+    link
+        Dotted path -> value texts of one length (``check_link``): stepped through together,
+        as the fastest axis of the product.
     """
-    count = math.prod(len(values) for values in vary.values())
+    axes = [[{path: text} for text in texts] for path, texts in vary.items()]
+    if link:
+        steps = zip(*link.values(), strict=True)
+        axes.append([dict(zip(link, texts, strict=True)) for texts in steps])
+    count = math.prod(len(axis) for axis in axes)
     if count > MAX_CASES:
         raise ModelError(
             [f"vary: the values give {count:,} cases; at most {MAX_CASES:,} run in one sweep"]
         )
-    keys = _short_keys(list(vary))
+    keys = _short_keys([*vary, *(link or {})])
     cases = []
-    for texts in itertools.product(*vary.values()):
-        values = dict(zip(vary, texts, strict=True))
+    for parts in itertools.product(*axes):
+        values = {path: text for part in parts for path, text in part.items()}
         name = "__".join(f"{keys[path]}={_safe(text)}" for path, text in values.items())
         cases.append(Case(id=name, values=values))
     return _unique(cases)

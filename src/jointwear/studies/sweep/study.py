@@ -32,7 +32,7 @@ from ...model import Model, ModelError, load_model
 from ...model.files import SAVED_MODEL
 from ...status import NOT_RUN, SUCCESS
 from ..life.settings import MAX_CYCLES
-from .cases import Case, check_vary, make_cases, si_value, value_text
+from .cases import Case, check_link, check_vary, make_cases, si_value, value_text
 from .runners import CaseTask, Outcome, read_record, run_dask, run_local, run_serial
 
 CASES_FOLDER = "cases"
@@ -76,6 +76,7 @@ def sweep(
     out: str | os.PathLike,
     *,
     vary: Mapping[str, Sequence[object]],
+    link: Mapping[str, Sequence[object]] | None = None,
     overrides: Sequence[str] = (),
     cycles: int | None = None,
     scheduler: str | None = None,
@@ -96,6 +97,9 @@ def sweep(
     vary
         Dotted path (as for ``--set``) -> list of values. Strings are read as ``--set`` reads
         them (``"0.1 mm"``, ``"abm"``); numbers and lists are taken as they are.
+    link
+        Dotted paths -> lists of values of one length, stepped through together (a crank's
+        speed and the frequency of the load it drives), combined with ``vary``'s.
     overrides
         ``dotted.path=value`` settings common to every case.
     cycles
@@ -126,8 +130,9 @@ def sweep(
         problem, naming the case), or if the scheduler cannot be reached.
     """
     texts = {path: _texts(values) for path, values in _mapping(vary).items()}
-    _check_options(texts, overrides, cycles, scheduler, workers)
-    cases = make_cases(texts)
+    linked = {path: _texts(values) for path, values in _mapping(link or {}).items()}
+    _check_options(texts, linked, overrides, cycles, scheduler, workers)
+    cases = make_cases(texts, linked)
     models = _load_cases(model_path, overrides, cases)
     folder = Path(out).resolve()
     check_folder(folder)
@@ -138,7 +143,8 @@ def sweep(
         write_text(folder / SAVED_MODEL, model_path.model_dump_json(indent=2))
         model_path = folder
     tasks = [_task(model_path, folder, overrides, cycles, c, models[c.id]) for c in cases]
-    _write_json(folder / "sweep.json", _plan_record(model_path, texts, overrides, cycles, cases))
+    record = _plan_record(model_path, texts, linked, overrides, cycles, cases)
+    _write_json(folder / "sweep.json", record)
 
     outcomes: dict[str, Outcome] = {}
     skipped = [task.case for task in tasks if _finished(Path(task.folder), task.record)]
@@ -179,7 +185,7 @@ def redraw_sweep_figures(folder: str | os.PathLike) -> list[Path]:
     try:
         plan = json.loads((path / "sweep.json").read_text())
         table = pd.read_parquet(path / "sweep.parquet")
-        cases = make_cases(plan["vary"])
+        cases = make_cases(plan["vary"], plan.get("link"))
         saved = [path / CASES_FOLDER / case / SAVED_MODEL for case in plan["cases"]]
         model = json.loads(next(p for p in saved if p.is_file()).read_text())
     except (OSError, ValueError, LookupError, TypeError, StopIteration) as error:
@@ -221,16 +227,21 @@ def _texts(values: object) -> object:
 
 def _check_options(
     vary: Mapping[str, Sequence[str]],
+    link: Mapping[str, Sequence[str]],
     overrides: Sequence[str],
     cycles: int | None,
     scheduler: str | None,
     workers: int | None,
 ) -> None:
-    check_vary(vary)
+    if vary or not link:
+        check_vary(vary)
+    if link:
+        check_link(link, vary)
     problems = [
-        f"{path}: both set (--set, --t-end or [set]) and varied (--vary); give it in one place"
+        f"{path}: both set (--set, --t-end or [set]) and varied (--vary or --link); give it in "
+        "one place"
         for path in dict.fromkeys(o.partition("=")[0].strip() for o in overrides)
-        if path in vary
+        if path in vary or path in link
     ]
     for option, value in (("--cycles", cycles), ("--workers", workers)):
         if value is not None and not (_whole(value) and value <= MAX_CYCLES):
@@ -410,6 +421,7 @@ def _write_json(path: Path, data: dict) -> None:
 def _plan_record(
     model_path: str | os.PathLike,
     vary: Mapping[str, Sequence[str]],
+    link: Mapping[str, Sequence[str]],
     overrides: Sequence[str],
     cycles: int | None,
     cases: Sequence[Case],
@@ -417,6 +429,7 @@ def _plan_record(
     return {
         "model": str(Path(model_path).resolve()),
         "vary": dict(vary),
+        "link": dict(link),
         "set": list(overrides),
         "cycles": cycles,
         "cases": [case.id for case in cases],
