@@ -135,7 +135,7 @@ def test_every_help_text_is_shown_whole(path, command):
 def test_square_brackets_in_help_texts_are_kept():
     sweep = words(invoke("sweep", "--help", env=WIDE).stdout)
     assert "Local processes [default: one per core]." in sweep
-    assert "Sweep file: TOML with [vary] (path = [values]) and [set]." in sweep
+    assert "Sweep file: TOML with [vary] and [link] (path = [values]) and [set]." in sweep
     assert "End time: seconds, or with a unit as --set takes them ('50 ms')." in sweep
     assert "End time" in words(invoke("run", "--help", env=WIDE).stdout)
 
