@@ -354,14 +354,13 @@ def simulate(
         "energy": energy.summary(),
     }
     if model.has_clearance:
-        whole = (element_logs.journal.totals, element_logs.slider.totals), t_reached - t0
+        totals = (element_logs.journal.totals, element_logs.slider.totals)
+        whole = _joint_figures(model, journals.wear, sliders.wear, totals, t_reached - t0)
         steady = windows.steady()
         summary["steady_state"] = settle.summary(t0, t_reached, steady[2] if steady else 0)
+        settled = None if steady is None else steady[:2]
         summary["clearance_joints"] = lead_with_steady_state(
-            _joint_figures(model, journals.wear, sliders.wear, *whole),
-            None
-            if steady is None
-            else _joint_figures(model, journals.wear, sliders.wear, *steady[:2]),
+            whole, settled and _joint_figures(model, journals.wear, sliders.wear, *settled)
         )
         tables["cycles"] = windows.table(model)
     summary["provenance"] = origin

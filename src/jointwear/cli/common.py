@@ -33,6 +33,13 @@ Overrides = Annotated[
     list[str] | None,
     typer.Option("--set", help="Override a model value: dotted.path=value (repeatable)."),
 ]
+Animation = Annotated[
+    bool,
+    typer.Option(
+        "--animation/--no-animation",
+        help="Also write the mechanism's animation, figures/mechanism.gif (seconds more).",
+    ),
+]
 EndTime = Annotated[
     str | None,
     typer.Option(

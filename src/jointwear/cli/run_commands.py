@@ -13,6 +13,7 @@ from rich.table import Table
 from .common import (
     PLAIN,
     T_END,
+    Animation,
     EndTime,
     ModelPath,
     Overrides,
@@ -44,13 +45,7 @@ def run(
     t_end: EndTime = None,
     overrides: Overrides = None,
     figures: Annotated[bool, typer.Option("--figures/--no-figures", help="Draw figures.")] = True,
-    animation: Annotated[
-        bool,
-        typer.Option(
-            "--animation/--no-animation",
-            help="Also write the mechanism's animation, figures/mechanism.gif (seconds more).",
-        ),
-    ] = False,
+    animation: Animation = False,
     ideal: Annotated[
         bool,
         typer.Option(
@@ -328,13 +323,7 @@ STUDY_FOLDERS = {"life.csv": "life-run", "sweep.json": "sweep"}  # what marks th
 
 def plot(
     folder: Annotated[Path, typer.Argument(help="Results folder of a run, a life run or a sweep.")],
-    animation: Annotated[
-        bool,
-        typer.Option(
-            "--animation/--no-animation",
-            help="Also write the mechanism's animation, figures/mechanism.gif (seconds more).",
-        ),
-    ] = False,
+    animation: Animation = False,
 ) -> None:
     """Draw (again) the figures of a results folder into FOLDER/figures."""
     kind = next((kind for name, kind in STUDY_FOLDERS.items() if (folder / name).is_file()), None)

@@ -47,8 +47,11 @@ def tribology_columns(model: Model, timeseries: pd.DataFrame) -> pd.DataFrame:
         c, name = joint.clearance, joint.name
         force = timeseries[f"{name}_fn"].to_numpy()
         speed = np.abs(timeseries[f"{name}_vt"].to_numpy())
-        patches = np.array([c.hertz_patch(f) for f in force]).reshape(-1, 2)
-        half_width, peak = patches[:, 0], patches[:, 1]
+        # Half-width and peak pressure grow as the square root of the force: those at 1 N,
+        # scaled, are the line contact's at every row.
+        unit_width, unit_peak = c.hertz_patch(1.0)
+        root = np.sqrt(np.maximum(force, 0.0))
+        half_width, peak = unit_width * root, unit_peak * root
         loaded = half_width > 0.0
         mean = np.zeros_like(force)
         mean[loaded] = force[loaded] / (2.0 * half_width[loaded] * c.width)

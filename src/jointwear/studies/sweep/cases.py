@@ -217,27 +217,27 @@ def read_sweep_file(path: str | os.PathLike) -> Plan:
     except ValueError:  # a number of thousands of digits
         raise ModelError([f"{path}: {TOO_LONG}"]) from None
     problems = [
-        f"{path}: unknown key {key!r}; a sweep file has the tables vary and set"
+        f"{path}: unknown key {key!r}; a sweep file has the tables vary, link and set"
         f"{did_you_mean(key, SWEEP_FILE_KEYS)}"
         for key in data
         if key not in SWEEP_FILE_KEYS
     ]
-    vary: dict[str, list[str]] = {}
-    for dotted, values in _leaves(data.get("vary", {}), stop_at_lists=True):
-        if not isinstance(values, list) or not values:
-            problems.append(f"{path}: vary.{dotted}: expected a non-empty array of values")
-        else:
-            vary[dotted] = [_toml(value) for value in values]
-    link: dict[str, list[str]] = {}
-    for dotted, values in _leaves(data.get("link", {}), stop_at_lists=True):
-        if not isinstance(values, list) or not values:
-            problems.append(f"{path}: link.{dotted}: expected a non-empty array of values")
-        else:
-            link[dotted] = [_toml(value) for value in values]
+    vary, link = (_value_lists(data, table, path, problems) for table in ("vary", "link"))
     overrides = [f"{dotted}={_toml(value)}" for dotted, value in _leaves(data.get("set", {}))]
     if problems:
         raise ModelError(problems)
     return Plan(vary=vary, overrides=overrides, link=link)
+
+
+def _value_lists(data: dict, table: str, path: Path, problems: list[str]) -> dict[str, list[str]]:
+    """A sweep file's ``[vary]`` or ``[link]``: dotted path -> value texts (problems added)."""
+    lists: dict[str, list[str]] = {}
+    for dotted, values in _leaves(data.get(table, {}), stop_at_lists=True):
+        if not isinstance(values, list) or not values:
+            problems.append(f"{path}: {table}.{dotted}: expected a non-empty array of values")
+        else:
+            lists[dotted] = [_toml(value) for value in values]
+    return lists
 
 
 def _leaves(
