@@ -10,9 +10,9 @@ from runs import EXAMPLES, simulate_ok
 import jointwear as jw
 from jointwear.figures.animation import CLEARANCE_SHARE, mechanism_scene, save_animation
 from jointwear.figures.clearance import plot_dynamics, plot_wear_sectors
-from jointwear.figures.folder import ALL_FIGURES, save_figures
+from jointwear.figures.folder import save_figures
+from jointwear.figures.names import ALL_FIGURES, SLIDER_FIGURES
 from jointwear.figures.slider import (
-    SLIDER_FIGURES,
     crank_abscissa,
     plot_corner_forces,
     plot_guide_wear,

@@ -69,6 +69,11 @@ def run(
     # is a request the runs act on, so nothing computed is lost to it (interrupts.py).
     with stop_requests():
         results = simulate(model, progress=progress)
+        drawing = None
+        if figures and len(results.timeseries) > 1:
+            from .figures.folder import FigureDrawing
+
+            drawing = FigureDrawing(results)  # the helpers draw while the rest goes on
         companion = None
         if ideal and model.has_clearance and results.status == SUCCESS:
             try:
@@ -90,12 +95,11 @@ def run(
             }
             _save(results, companion, rescue)
             return results
-        if figures and len(results.timeseries) > 1:
-            from .figures.folder import save_figures  # matplotlib only when figures are wanted
+        if drawing is not None:
             from .figures.names import ANIMATION
 
             try:
-                save_figures(results, folder / FIGURES, ideal=companion, animation=animation)
+                drawing.save(folder / FIGURES, ideal=companion, animation=animation)
                 if not animation:  # an earlier run's: it would show another run
                     remove(folder / FIGURES / ANIMATION)
             except OSError as error:

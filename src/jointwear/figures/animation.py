@@ -31,7 +31,7 @@ from ..io import make_folder, write_atomic
 from ..model import Model
 from ..model.sections import RevoluteJoint, TranslationalJoint
 from ..results import Results
-from .run import crank_driver
+from .plan import crank_driver
 from .slider import crank_body
 
 NO_CRANK_SPAN = 0.04  # [s] the time animated when no constant-speed driver turns a crank

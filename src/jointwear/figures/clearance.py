@@ -8,7 +8,6 @@ counter-clockwise in that surface's body frame from the body's x axis, as in the
 from __future__ import annotations
 
 import math
-from functools import partial
 from pathlib import Path
 
 import numpy as np
@@ -20,9 +19,8 @@ from matplotlib.figure import Figure  # figures without pyplot: no global backen
 from ..model.sections import RevoluteJoint
 from ..results import Results
 from ..results.clearance import UM
-from .files import Drawings, save_pngs
-from .names import CLEARANCE_FIGURES
-from .run import crank_driver
+from .files import save_pngs
+from .plan import clearance_drawings, crank_driver
 
 PROFILE_SHARE = 0.15  # Fig. 10: the largest wear depth is drawn as this share of the radius
 STILL_ANGLE = 1e-6  # [rad] a body whose angle spans less does not rotate (a slider)
@@ -40,14 +38,12 @@ def _paper(results: Results, figure: str) -> str:
     return f" (paper Fig. {figure})" if results.model.name.startswith(PAPER_MODEL) else ""
 
 
-def _clearance_joints(results: Results) -> tuple[RevoluteJoint, ...]:
-    """The revolute clearance joints (translational ones have figures of their own: slider.py)."""
-    return results.model.clearance_joints
-
-
 def _require_joints(results: Results) -> tuple[RevoluteJoint, ...]:
-    """The revolute clearance joints; ValueError if there are none to draw."""
-    joints = _clearance_joints(results)
+    """The revolute clearance joints; ValueError if there are none to draw.
+
+    Translational ones have figures of their own (slider.py).
+    """
+    joints = results.model.clearance_joints
     if not joints:
         raise ValueError(f"model '{results.model.name}' has no revolute clearance joints")
     return joints
@@ -352,21 +348,6 @@ def plot_wear_profile(results: Results) -> Figure:
         f"{results.model.name}: initial and worn profiles, wear exaggerated{_paper(results, '10')}"
     )
     return fig
-
-
-def clearance_drawings(results: Results, ideal: Results | None = None) -> Drawings:
-    """The clearance figures (paper Figs. 7-10) by file name; none without clearance joints.
-
-    ``ideal``: the same mechanism with ideal joints, for the comparison of Fig. 7 (a)-(c).
-    """
-    if not _clearance_joints(results):
-        return {}
-    draws = (
-        partial(plot_dynamics, results, ideal),
-        *(partial(d, results) for d in (plot_orbit, plot_wear_sectors, plot_wear_polar)),
-        partial(plot_wear_profile, results),
-    )
-    return dict(zip(CLEARANCE_FIGURES, draws, strict=True))
 
 
 def save_clearance_figures(

@@ -5,13 +5,15 @@ from __future__ import annotations
 from collections.abc import Callable, Mapping
 from functools import partial
 from pathlib import Path
-
-from matplotlib.figure import Figure
+from typing import TYPE_CHECKING
 
 from ..io import make_folder, write_atomic
 from .render import DPI, render_pngs
 
-Drawings = Mapping[str, Callable[[], Figure]]  # file name without .png -> draws that figure
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
+Drawings = Mapping[str, Callable[[], "Figure"]]  # file name without .png -> draws that figure
 
 
 def save_png(figure: Figure, path: Path, dpi: int = DPI) -> Path:
@@ -26,11 +28,16 @@ def save_pngs(drawings: Drawings, folder: Path, dpi: int = DPI) -> list[Path]:
     Returns the paths written. Nothing is written unless every figure could be drawn (and no
     folder made for none).
     """
-    if not drawings:
-        return []
     images = render_pngs(list(drawings.values()), dpi)
+    return write_pngs(dict(zip(drawings, images, strict=True)), folder)
+
+
+def write_pngs(images: Mapping[str, bytes], folder: Path) -> list[Path]:
+    """Write each PNG image as ``folder/<name>.png``; return the paths (no folder for none)."""
+    if not images:
+        return []
     make_folder(folder)
     return [
         write_atomic(folder / f"{name}.png", partial(Path.write_bytes, data=image))
-        for name, image in zip(drawings, images, strict=True)
+        for name, image in images.items()
     ]

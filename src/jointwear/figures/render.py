@@ -3,13 +3,14 @@
 Drawing is matplotlib's layout and text work, a few tenths of a second per figure, so a run's
 seven or eight figures take seconds one after another. Within ``drawing_helper``, two Python
 processes are started at once (spawned, not forked: the run's threads make a fork unsafe);
-they import matplotlib while the run computes, and then draw the figures ``render_pngs`` is
-given, side by side. Writing the files stays with the caller, so the file rule of
-``jointwear.io`` holds in one process.
+they import matplotlib while the run computes, and then draw the figures ``start_pngs`` is
+given, side by side, while the caller goes on. Writing the files stays with the caller, so the
+file rule of ``jointwear.io`` holds in one process.
 """
 
 from __future__ import annotations
 
+import gc
 import multiprocessing
 import os
 import signal
@@ -27,6 +28,7 @@ if TYPE_CHECKING:
 DPI = 150  # resolution of the PNGs [dots per inch]
 STOP_SIGNALS = {signal.SIGINT, signal.SIGTERM}
 HELPERS = min(2, os.cpu_count() or 1)  # processes that draw (the caller waits meanwhile)
+HELPER_NICENESS = 5  # added to the helpers' niceness: the run they wait for comes first
 
 _helper: ProcessPoolExecutor | None = None  # the open drawing_helper's processes
 
@@ -49,7 +51,7 @@ def drawing_helper(wanted: bool = True) -> Iterator[None]:
         return
     with _signals_ignored_by_children():
         helper = ProcessPoolExecutor(
-            HELPERS, mp_context=multiprocessing.get_context("spawn"), initializer=_import_figures
+            HELPERS, mp_context=multiprocessing.get_context("spawn"), initializer=_prepare_helper
         )
         for _ in range(HELPERS):
             helper.submit(int)  # starts the processes now, while the caller computes
@@ -82,26 +84,38 @@ def _signals_ignored_by_children() -> Iterator[None]:
 def render_pngs(drawings: Sequence[Callable[[], Figure]], dpi: int = DPI) -> list[bytes]:
     """Call each drawing and return its figure as PNG bytes, in the order given.
 
-    Within ``drawing_helper``, the helper processes draw them, each receiving its drawing
-    pickled; an exception a drawing raises there is raised here as it was. Without helpers,
-    or if they are gone (killed), they are drawn here.
+    Within ``drawing_helper``, the helper processes draw them (``start_pngs``).
     """
-    helper = _helper
-    if helper is None or len(drawings) < 2:
-        return [_png(draw, dpi) for draw in drawings]
+    return start_pngs(drawings, dpi)()
+
+
+def start_pngs(
+    drawings: Sequence[Callable[[], Figure]], dpi: int = DPI
+) -> Callable[[], list[bytes]]:
+    """Hand the drawings to the helper processes now; the call returned waits for the PNGs.
+
+    The call returns each figure as PNG bytes, in the order given. Each drawing reaches a
+    helper pickled; an exception it raises there is raised by the call as it was. Without
+    helpers, or if they are gone (killed), the call draws the figures itself.
+    """
     sent: dict[int, Future[bytes]] = {}
-    try:
-        for i in range(len(drawings)):
-            sent[i] = helper.submit(_png, drawings[i], dpi)
-    except BrokenProcessPool:  # the helper is gone (killed): drawn here instead
-        sent.clear()
-    images = {i: _png(draw, dpi) for i, draw in enumerate(drawings) if i not in sent}
-    for i, future in sent.items():
+    if _helper is not None:
         try:
-            images[i] = future.result()
-        except BrokenProcessPool:
-            images[i] = _png(drawings[i], dpi)
-    return [images[i] for i in range(len(drawings))]
+            for i, draw in enumerate(drawings):
+                sent[i] = _helper.submit(_png, draw, dpi)
+        except BrokenProcessPool:  # the helper is gone (killed): drawn here instead
+            sent.clear()
+
+    def wait() -> list[bytes]:
+        images = {i: _png(draw, dpi) for i, draw in enumerate(drawings) if i not in sent}
+        for i, future in sent.items():
+            try:
+                images[i] = future.result()
+            except BrokenProcessPool:
+                images[i] = _png(drawings[i], dpi)
+        return [images[i] for i in range(len(drawings))]
+
+    return wait
 
 
 def _png(draw: Callable[[], Figure], dpi: int) -> bytes:
@@ -110,6 +124,13 @@ def _png(draw: Callable[[], Figure], dpi: int) -> bytes:
     return buffer.getvalue()
 
 
-def _import_figures() -> None:
-    """In the helper: import the figure modules before the first figure is asked for."""
-    from . import folder  # noqa: F401
+def _prepare_helper() -> None:
+    """In a helper: yield the CPU to the run, and import what drawing needs before it is asked.
+
+    The imports' objects are then set apart from the garbage collector (``gc.freeze``): they
+    live as long as the helper, and collecting them would slow drawing and the helper's exit.
+    """
+    os.nice(HELPER_NICENESS)
+    from . import clearance, run, slider  # noqa: F401
+
+    gc.freeze()

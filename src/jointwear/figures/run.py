@@ -14,17 +14,9 @@ from matplotlib.figure import Figure  # figures without pyplot: no global backen
 
 from ..results import Results
 from ..results.energy_balance import energy_balance, unaccounted
+from .plan import crank_driver
 
-CRANK_FUNCTIONS = ("constant_speed",)  # driver functions that turn a crank
 STILL_SPEED = 1e-9  # [rad/s] a body whose angular velocity stays below this does not turn
-
-
-def crank_driver(results: Results) -> tuple[str, str, float] | None:
-    """(driver name, driven body, speed [rad/s]) of the first constant-speed angle driver."""
-    for driver in results.model.drivers:
-        if driver.type == "angle" and driver.function.type in CRANK_FUNCTIONS:
-            return driver.name, driver.body, driver.function.speed
-    return None
 
 
 def _last_turn(df: pd.DataFrame, speed: float) -> pd.DataFrame:

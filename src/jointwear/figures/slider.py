@@ -10,7 +10,6 @@ Wear positions run along each surface from its middle, in its body's frame.
 from __future__ import annotations
 
 import math
-from functools import partial
 from pathlib import Path
 from typing import NamedTuple
 
@@ -24,9 +23,8 @@ from ..model.sections import RevoluteJoint, TranslationalJoint
 from ..model.slide_clearance import SlideClearance
 from ..results import Results
 from ..results.clearance import UM
-from .files import Drawings, save_pngs
-from .names import SLIDER_FIGURES
-from .run import crank_driver
+from .files import save_pngs
+from .plan import crank_driver, slider_drawings
 
 MM = 1e3  # [mm/m]
 MRAD = 1e3  # [mrad/rad]
@@ -278,14 +276,6 @@ def plot_guide_wear(results: Results) -> Figure:
     note = f" (unbounded guide of {', '.join(unbounded)}: slider only)" if unbounded else ""
     fig.suptitle(f"{results.model.name}: wear depth at t = {t_end:.4g} s{note}")
     return fig
-
-
-def slider_drawings(results: Results) -> Drawings:
-    """The slider figures by file name; none without translational clearance joints."""
-    if not results.model.slider_joints:
-        return {}
-    draws = (plot_slider_motion, plot_corner_forces, plot_guide_wear)
-    return {name: partial(draw, results) for name, draw in zip(SLIDER_FIGURES, draws, strict=True)}
 
 
 def save_slider_figures(results: Results, folder: str | Path) -> list[Path]:
