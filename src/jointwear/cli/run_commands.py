@@ -34,6 +34,7 @@ if TYPE_CHECKING:
     from ..model import Model
     from ..model.clearance import Clearance, ContactKeys
     from ..model.sections import TranslationalJoint
+    from ..results import Results
 
 PROGRESS_AFTER_S = 1.0  # show a progress bar only for runs longer than this
 HERTZ_REFERENCE_FORCES = (100.0, 1000.0)  # loads at which `check` shows the Hertz patch [N]
@@ -55,20 +56,35 @@ def run(
     ] = True,
 ) -> None:
     """Simulate MODEL and write the results folder (summary, time series, wear, figures)."""
-    from ..compiling import compile_notice
     from ..figures.render import drawing_helper
-    from ..model import ModelError
-    from ..run import run as run_model
-    from ..status import SUCCESS
 
     settings = end_time(overrides, t_end)
+    with drawing_helper(figures):  # first: its processes start up while this one imports
+        results = _run(model, out_dir, settings, t_end, figures, animation, ideal)
+    _report(results, out_dir)
+
+
+def _run(
+    model: Path,
+    out_dir: Path,
+    settings: list[str],
+    t_end: str | None,
+    figures: bool,
+    animation: bool,
+    ideal: bool,
+) -> Results:
+    """The run of ``run``, with its compile notice and progress bar."""
+    from ..compiling import compile_notice
+    from ..model import ModelError
+    from ..run import run as run_model
+
     bar = ProgressBar(
         "simulating", "t = {task.completed:.4g} / {task.total:.4g} s", PROGRESS_AFTER_S
     )
     compiling = CompileNotice()
     try:
-        with compile_notice(compiling.started, compiling), drawing_helper(figures):
-            results = run_model(
+        with compile_notice(compiling.started, compiling):
+            return run_model(
                 model, out_dir, overrides=settings, figures=figures, animation=animation,
                 ideal=ideal,
                 progress=compiling.then(bar),
@@ -83,6 +99,12 @@ def run(
     finally:
         compiling.bar.close()
         bar.close()
+
+
+def _report(results: Results, out_dir: Path) -> None:
+    """The console lines of ``run``; the exit code of a run that stopped early."""
+    from ..status import SUCCESS
+
     stats = results.summary["stats"]
     out.print(
         f"{results.status}: {results.message}; t = {stats['t_reached']:.6g} s, "
