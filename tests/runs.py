@@ -73,3 +73,11 @@ def whole_run(results: jw.Results, joint: str) -> dict:
     """A clearance joint's summary with the whole run's figures, not the steady state's."""
     entry = results.summary["clearance_joints"][joint]
     return {**entry, **entry["whole_run"]}
+
+
+PER_METRE = {"nm": 1e9, "µm": 1e6, "mm": 1e3, "m": 1.0}
+
+
+def drawn_per_metre(label: str) -> float:
+    """The count per metre of the unit a figure's label names, as in 'wear depth [nm]'."""
+    return PER_METRE[label.split("wear depth [", 1)[1].split("]", 1)[0]]

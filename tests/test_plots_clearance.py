@@ -4,8 +4,10 @@ from dataclasses import replace
 
 import numpy as np
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
 from PIL import Image
-from runs import EXAMPLES, simulate_ok
+from runs import EXAMPLES, PER_METRE, drawn_per_metre, simulate_ok
 
 from jointwear.figures.animation import save_animation
 from jointwear.figures.clearance import (
@@ -110,11 +112,13 @@ def test_sector_panels_hold_every_snapshot_and_the_end(fourbar):
     assert times == pytest.approx([0.03, 0.06, 0.09])
     for ax, surface in [(journal, "journal"), (bearing, "bearing")]:
         assert len(ax.lines) == 4
+        per_m = drawn_per_metre(ax.get_ylabel())
+        assert per_m == 1e9  # 2.5 turns wear the journal by about 0.3 µm: drawn in nm
         for line, time in zip(ax.lines, times, strict=False):
             depth = profile(snapshots[snapshots["time_s"] == time], surface)
-            np.testing.assert_array_equal(line.get_ydata(), depth * 1e6)
+            np.testing.assert_array_equal(line.get_ydata(), depth * per_m)
         np.testing.assert_array_equal(
-            ax.lines[-1].get_ydata(), profile(fourbar.wear, surface) * 1e6
+            ax.lines[-1].get_ydata(), profile(fourbar.wear, surface) * per_m
         )
     labels = [text.get_text() for text in journal.get_legend().get_texts()]
     assert labels == ["after 0.8 turns", "after 1.5 turns", "after 2.2 turns", "after 2.5 turns"]
@@ -124,7 +128,7 @@ def test_polar_radii_are_the_final_wear(fourbar):
     journal, bearing = plot_wear_polar(fourbar).axes
     for ax, surface in [(journal, "journal"), (bearing, "bearing")]:
         theta, radius = ax.lines[0].get_xdata(), ax.lines[0].get_ydata()
-        depth = profile(fourbar.wear, surface) * 1e6
+        depth = profile(fourbar.wear, surface) * drawn_per_metre(ax.get_title())
         np.testing.assert_array_equal(radius, [*depth, depth[0]])  # closed curve
         np.testing.assert_allclose(np.degrees(theta[:-1]), (np.arange(36) + 0.5) * 10.0)
 
@@ -204,3 +208,20 @@ def test_a_run_whose_figures_the_helpers_draw_never_imports_matplotlib(tmp_path)
     assert done.stdout.strip() == "[]"  # matplotlib's import (~1 s) stays with the helpers
     written = {p.name for p in (out / "figures").glob("*.png")}
     assert written == {"energy.png", "cycle.png", *(f"{n}.png" for n in CLEARANCE_FIGURES)}
+
+
+@pytest.mark.parametrize(
+    ("largest_m", "unit"),
+    [(2.9e-6, "µm"), (6.5e-11, "nm"), (3.0e-4, "µm"), (1.5e-3, "mm"), (5.0, "m"), (0.0, "µm")],
+)
+def test_wear_depths_are_drawn_in_the_unit_that_reads_below_a_thousand(largest_m, unit):
+    from jointwear.figures.scaling import length_unit
+
+    assert length_unit([-0.5 * largest_m, largest_m, np.nan]) == (unit, PER_METRE[unit])
+
+
+@given(st.floats(min_value=1e-9, max_value=999.0))
+def test_a_length_from_a_nanometre_up_reads_from_1_to_999_in_its_unit(largest_m):
+    from jointwear.figures.scaling import length_unit
+
+    assert 1.0 <= largest_m * length_unit([largest_m])[1] < 1000.0

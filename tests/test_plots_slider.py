@@ -5,7 +5,7 @@ import math
 import numpy as np
 import pytest
 from PIL import Image
-from runs import EXAMPLES, simulate_ok
+from runs import EXAMPLES, drawn_per_metre, simulate_ok
 
 import jointwear as jw
 from jointwear.figures.animation import CLEARANCE_SHARE, mechanism_scene, save_animation
@@ -137,18 +137,19 @@ def test_wear_lines_are_the_wear_table(piston):
     assert times == pytest.approx([0.03, 0.06])
     for ax, part in [(guide, "guide"), (slider, "slider")]:
         assert len(ax.lines) == 2 * (len(times) + 1)  # top and bottom: snapshots, then the end
+        per_m = drawn_per_metre(ax.get_ylabel())
+        assert per_m == 1e9  # depths of a few hundredths of a nanometre
         for side in ("top", "bottom"):
             surface = f"{part}_{side}"
             (final,) = [line for line in ax.lines if line.get_label() == surface]
             table = rows(piston.wear, surface)
-            np.testing.assert_array_equal(final.get_ydata(), table["depth_m"] * 1e6)
+            np.testing.assert_array_equal(final.get_ydata(), table["depth_m"] * per_m)
             np.testing.assert_array_equal(final.get_xdata(), table["position_m"] * 1e3)
             same = [line for line in ax.lines if line.get_color() == final.get_color()]
             for line, time in zip(same[:-1], times, strict=True):
                 snap = rows(snapshots[snapshots["time_s"] == time], surface)
-                np.testing.assert_array_equal(line.get_ydata(), snap["depth_m"] * 1e6)
+                np.testing.assert_array_equal(line.get_ydata(), snap["depth_m"] * per_m)
                 assert line.get_alpha() < 1.0
-        assert ax.get_ylabel() == "wear depth [µm]"
     assert guide.get_xlim() == pytest.approx((-220.0, 220.0))
     assert slider.get_xlim() == pytest.approx((-50.0, 50.0))
     assert piston.wear["depth_m"].max() > 0.0
@@ -246,9 +247,9 @@ def test_revolute_and_slider_clearances_draw_both_sets(tmp_path):
     velocity = plot_dynamics(both).axes[0]  # the slider tilts, but its x motion is the output
     assert velocity.get_ylabel() == "x velocity [m/s]"
     ax = plot_wear_sectors(both).axes[0]  # the journal
+    journal = both.wear[both.wear["surface"] == "journal"].sort_values("sector")["depth_m"]
     np.testing.assert_array_equal(
-        ax.lines[-1].get_ydata(),
-        both.wear[both.wear["surface"] == "journal"].sort_values("sector")["depth_m"] * 1e6,
+        ax.lines[-1].get_ydata(), journal * drawn_per_metre(ax.get_ylabel())
     )
 
 

@@ -18,9 +18,9 @@ from matplotlib.figure import Figure  # figures without pyplot: no global backen
 
 from ..model.sections import RevoluteJoint
 from ..results import Results
-from ..results.clearance import UM
 from .files import save_pngs
 from .plan import clearance_drawings, crank_driver
+from .scaling import length_unit
 
 PROFILE_SHARE = 0.15  # Fig. 10: the largest wear depth is drawn as this share of the radius
 STILL_ANGLE = 1e-6  # [rad] a body whose angle spans less does not rotate (a slider)
@@ -207,15 +207,17 @@ def _profiles_over_time(results: Results) -> list[tuple[float, pd.DataFrame]]:
     return profiles
 
 
-def _mark_peak(ax: Axes, results: Results, joint: str, surface: str) -> None:
-    """Annotate the summary's deepest sector of ``surface`` (depth in µm)."""
+def _mark_peak(
+    ax: Axes, results: Results, joint: str, surface: str, unit: tuple[str, float]
+) -> None:
+    """Annotate the summary's deepest sector of ``surface`` (depth in ``unit``: name, per m)."""
     entry = results.summary["clearance_joints"][joint]
-    depth = entry[f"max_wear_depth_{surface}_m"] * UM
+    depth = entry[f"max_wear_depth_{surface}_m"] * unit[1]
     angle = entry[f"max_wear_angle_{surface}_deg"]
     if angle is None:  # no wear on this surface
         return
     ax.annotate(
-        f"max {depth:.3g} µm at {angle:g}°",
+        f"max {depth:.3g} {unit[0]} at {angle:g}°",
         (angle, depth),
         xytext=(8, 4),
         textcoords="offset points",
@@ -224,12 +226,14 @@ def _mark_peak(ax: Axes, results: Results, joint: str, surface: str) -> None:
 
 
 def plot_wear_sectors(results: Results) -> Figure:
-    """Wear depth per sector [µm] at each snapshot, journal and bearing: paper Fig. 8.
+    """Wear depth per sector at each snapshot, journal and bearing: paper Fig. 8.
 
-    One row per clearance joint, journal on the left, bearing on the right.
+    One row per clearance joint, journal on the left, bearing on the right. Depths in nm, µm
+    or mm, as the deepest reads (``scaling.length_unit``).
     """
     joints = _require_joints(results)
     profiles = _profiles_over_time(results)
+    unit, per_m = length_unit(results.wear["depth_m"])
     colors = colormaps["viridis"](np.linspace(0.85, 0.0, len(profiles)))
     fig = Figure(figsize=(11.0, 3.8 * len(joints) + 0.5), layout="constrained")
     axes = fig.subplots(len(joints), 2, squeeze=False)
@@ -238,12 +242,12 @@ def plot_wear_sectors(results: Results) -> Figure:
             for (time, table), color in zip(profiles, colors, strict=True):
                 angle, depth = _profile(table, joint.name, surface)
                 label = _turns_label(results, time)
-                ax.plot(angle, depth * UM, "o-", ms=3, lw=1.0, color=color, label=label)
-            _mark_peak(ax, results, joint.name, surface)
+                ax.plot(angle, depth * per_m, "o-", ms=3, lw=1.0, color=color, label=label)
+            _mark_peak(ax, results, joint.name, surface, (unit, per_m))
             body = _surface_body(joint, surface)
             ax.set_title(f"{joint.name}: {surface} ({body})")
             ax.set_xlabel(f"angle in the {body} frame [deg]")
-            ax.set_ylabel("wear depth [µm]")
+            ax.set_ylabel(f"wear depth [{unit}]")
             ax.set_xlim(0.0, 360.0)
             ax.set_xticks(np.arange(0, 361, 45))
             ax.set_ylim(bottom=0.0)
@@ -254,8 +258,12 @@ def plot_wear_sectors(results: Results) -> Figure:
 
 
 def plot_wear_polar(results: Results) -> Figure:
-    """Final wear depth per sector [µm] in polar form, journal and bearing: paper Fig. 9."""
+    """Final wear depth per sector in polar form, journal and bearing: paper Fig. 9.
+
+    Depths in nm, µm or mm, as the deepest reads (``scaling.length_unit``).
+    """
     joints = _require_joints(results)
+    unit, per_m = length_unit(results.wear["depth_m"])
     fig = Figure(figsize=(10.0, 5.0 * len(joints) + 0.5), layout="constrained")
     t_end = float(results.timeseries["time"].iloc[-1])
     for k, joint in enumerate(joints):
@@ -263,7 +271,7 @@ def plot_wear_polar(results: Results) -> Figure:
             ax = fig.add_subplot(len(joints), 2, 2 * k + s + 1, projection="polar")
             angle, depth = _profile(results.wear, joint.name, surface)
             theta = np.radians(np.append(angle, angle[0]))
-            radius = np.append(depth, depth[0]) * UM
+            radius = np.append(depth, depth[0]) * per_m
             ax.plot(theta, radius, color="tab:red", lw=1.2)
             peak = int(np.argmax(depth))
             ax.plot(theta[peak], radius[peak], "o", color="tab:red", ms=4)
@@ -271,7 +279,7 @@ def plot_wear_polar(results: Results) -> Figure:
             ax.set_rlabel_position(67.5)
             ax.set_title(
                 f"{joint.name}: {surface} ({_surface_body(joint, surface)})\n"
-                f"wear depth [µm] {_turns_label(results, t_end)}",
+                f"wear depth [{unit}] {_turns_label(results, t_end)}",
                 fontsize="medium",
             )
     fig.suptitle(f"{results.model.name}: total wear per sector{_paper(results, '9')}")

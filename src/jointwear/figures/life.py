@@ -17,12 +17,13 @@ from matplotlib import colormaps
 from matplotlib.figure import Figure  # figures without pyplot: no global backend switch
 
 from ..model import Model
-from ..results.clearance import UM
 from ..studies.life.files import FIGURE_FILES
 from ..studies.life.records import GROWTH_MARK, cycles_at, driver_columns
 from .files import save_png
+from .scaling import length_unit
 
 PROFILE_COUNTS = 5  # profiles drawn: at about 1/5, 2/5, ... of the cycles reached
+LENGTH_COLUMNS = ("_wear_depth_journal_m", "_wear_depth_bearing_m", ".clearance_growth_m")
 PLOT_ORDER = ("journal", "bearing")  # the journal first, as in the paper's Figs. 8-10
 
 
@@ -33,7 +34,7 @@ def plot_life_wear(
     band: pd.DataFrame | None = None,
     marks: dict | None = None,
 ) -> Figure:
-    """Wear depth and clearance growth [µm], peak contact force [kN], torque range, vs cycles.
+    """Wear depth and clearance growth, peak contact force [kN], torque range, vs cycles.
 
     ``band`` (life_band.csv) shades the clearance growth's band; ``marks`` (the summary's
     ``clearance_joints``) gives the band of the cycles to 50 % growth for the annotation.
@@ -41,20 +42,23 @@ def plot_life_wear(
     fig = Figure(figsize=(8.0, 9.0), layout="constrained")
     depth, force, torque = fig.subplots(3, 1, sharex=True)
     cycles = table["cycles"].to_numpy()
+    lengths = [c for c in table if c.endswith(LENGTH_COLUMNS)]
+    marks_m = [GROWTH_MARK * joint.clearance.radial_clearance for joint in model.clearance_joints]
+    unit, per_m = length_unit([*table[lengths].to_numpy().ravel(), *marks_m])
     for joint in model.clearance_joints:
         name = joint.name
         for surface, style in zip(PLOT_ORDER, ("-", "--"), strict=True):
-            values = table[f"{name}.max_wear_depth_{surface}_m"] * UM
+            values = table[f"{name}.max_wear_depth_{surface}_m"] * per_m
             depth.plot(cycles, values, style, label=f"{name}: {surface}, deepest sector")
-        growth = table[f"{name}.clearance_growth_m"] * UM
+        growth = table[f"{name}.clearance_growth_m"] * per_m
         line = depth.plot(cycles, growth, "-", lw=2.0, label=f"{name}: clearance growth")[0]
         if band is not None:
-            low, high = (band[f"{name}.clearance_growth_{end}_m"] * UM for end in ("low", "high"))
+            low, high = (band[f"{name}.clearance_growth_{e}_m"] * per_m for e in ("low", "high"))
             depth.fill_between(
                 band["cycles"], low, high, color=line.get_color(), alpha=0.25, lw=0,
                 label=f"{name}: clearance growth, band of {band['runs'].max()} runs",
             )  # fmt: skip
-        mark = GROWTH_MARK * joint.clearance.radial_clearance * UM
+        mark = GROWTH_MARK * joint.clearance.radial_clearance * per_m
         depth.axhline(mark, color=line.get_color(), ls=":", lw=1.0)
         reached = cycles_at(table["cycles"], growth, mark)
         text = f"{GROWTH_MARK:.0%} of c" + (f" at {reached:,.0f} cycles" if reached else "")
@@ -68,7 +72,7 @@ def plot_life_wear(
         force.plot(cycles, table[f"{name}.max_contact_force_n"] / 1e3, ".-", label=name)
     range_column = driver_columns(model, driver)[1]
     torque.plot(cycles, table[range_column], ".-", color="k")
-    depth.set_ylabel("wear depth [µm]")
+    depth.set_ylabel(f"wear depth [{unit}]")
     depth.legend(loc="upper left", fontsize="small")
     force.set_ylabel("peak contact force\nof the measured cycles [kN]")
     force.legend(loc="upper left", fontsize="small")
@@ -99,8 +103,9 @@ def profile_updates(table: pd.DataFrame) -> list[int]:
 
 
 def plot_life_profiles(model: Model, table: pd.DataFrame, profiles: pd.DataFrame) -> Figure:
-    """Wear depth per sector [µm] of both surfaces, polar, at a few cycle counts."""
+    """Wear depth per sector of both surfaces, polar, at a few cycle counts."""
     joints = model.clearance_joints
+    unit, per_m = length_unit(profiles["depth_m"])
     updates = profile_updates(table)
     colours = colormaps["viridis"](np.linspace(0.0, 0.9, len(updates)))
     fig = Figure(figsize=(10.0, 5.0 * len(joints) + 0.5), layout="constrained")
@@ -114,12 +119,13 @@ def plot_life_profiles(model: Model, table: pd.DataFrame, profiles: pd.DataFrame
                     & (profiles["surface"] == surface)
                 ].sort_values("sector")
                 theta = np.radians(np.append(rows["angle_deg"], rows["angle_deg"].iloc[0]))
-                depth = np.append(rows["depth_m"], rows["depth_m"].iloc[0]) * UM
+                depth = np.append(rows["depth_m"], rows["depth_m"].iloc[0]) * per_m
                 label = f"{int(rows['cycles'].iloc[0]):,} cycles"
                 ax.plot(theta, depth, color=colour, lw=1.2, label=label)
             ax.set_rlabel_position(67.5)
             body = joint.bodies[0] if surface == "bearing" else joint.bodies[1]
-            ax.set_title(f"{joint.name}: {surface} ({body})\nwear depth [µm]", fontsize="medium")
+            title = f"{joint.name}: {surface} ({body})\nwear depth [{unit}]"
+            ax.set_title(title, fontsize="medium")
             if s == 0:
                 ax.legend(loc="lower left", bbox_to_anchor=(-0.25, -0.12), fontsize="small")
     fig.suptitle(f"{model.name}: wear profiles as the cycles accumulate")

@@ -22,9 +22,9 @@ from matplotlib.ticker import MultipleLocator
 from ..model.sections import RevoluteJoint, TranslationalJoint
 from ..model.slide_clearance import SlideClearance
 from ..results import Results
-from ..results.clearance import UM
 from .files import save_pngs
 from .plan import crank_driver, slider_drawings
+from .scaling import length_unit
 
 MM = 1e3  # [mm/m]
 MRAD = 1e3  # [mrad/rad]
@@ -224,7 +224,11 @@ def _snapshots(results: Results) -> list[tuple[float, pd.DataFrame]]:
 def _wear_panel(
     ax: Axes, results: Results, joint: TranslationalJoint, part: str, length: float
 ) -> None:
-    """Wear depth [µm] along the ``part`` ("guide", "slider") surfaces: snapshots, then the end."""
+    """Wear depth along the ``part`` ("guide", "slider") surfaces: snapshots, then the end.
+
+    Depths in nm, µm or mm, as the deepest of the run reads (``scaling.length_unit``).
+    """
+    unit, per_m = length_unit(results.wear["depth_m"])
     snapshots = _snapshots(results)
     times = [f"{t:.3g}" for t, _ in snapshots]
     times = times if len(times) <= 4 else [times[0], "…", times[-1]]
@@ -233,14 +237,14 @@ def _wear_panel(
         for n, (_, table) in enumerate(snapshots):
             position, depth = _depths(table, joint.name, surface)
             label = f"t = {', '.join(times)} s (lighter)" if n == 0 and side == "top" else None
-            ax.plot(position * MM, depth * UM, lw=0.8, color=color, alpha=SNAPSHOT_ALPHA,
+            ax.plot(position * MM, depth * per_m, lw=0.8, color=color, alpha=SNAPSHOT_ALPHA,
                     label=label)  # fmt: skip
         position, depth = _depths(results.wear, joint.name, surface)
-        ax.plot(position * MM, depth * UM, "o-", ms=3, lw=1.2, color=color, label=surface)
+        ax.plot(position * MM, depth * per_m, "o-", ms=3, lw=1.2, color=color, label=surface)
     body = joint.bodies[0] if part == "guide" else joint.bodies[1]
     where = "its middle" if part == "guide" else "its centre"
     ax.set_xlabel(f"position along the {part} from {where} ({body} frame) [mm]")
-    ax.set_ylabel("wear depth [µm]")
+    ax.set_ylabel(f"wear depth [{unit}]")
     ax.set_xlim(-0.5 * length * MM, 0.5 * length * MM)
     ax.set_ylim(bottom=0.0)
     ax.grid(alpha=0.3)
@@ -248,7 +252,7 @@ def _wear_panel(
 
 
 def plot_guide_wear(results: Results) -> Figure:
-    """Wear depth [µm] along the guide's and the slider's surfaces [mm] at the end of the run.
+    """Wear depth along the guide's and the slider's surfaces [mm] at the end of the run.
 
     Earlier wear snapshots as lighter lines. An unbounded guide keeps no map of its wear:
     its joint shows the slider's surfaces only (said in the titles).
