@@ -224,6 +224,32 @@ def test_animation_of_an_unbounded_guide_spans_the_travel(unbounded):
     assert top.get_ydata() == pytest.approx([HALF_HEIGHT + 10.0 * GAP] * 2)
 
 
+def test_animation_draws_an_ideal_slider_on_its_guide():
+    from jointwear.figures.animation import IDEAL_SLIDER_ASPECT, IDEAL_SLIDER_SHARE
+
+    ideal = simulate_ok(EXAMPLES / "slider_crank.toml", ["solver.t_end=0.012"])  # one turn
+    scene = mechanism_scene(ideal, frames=10)
+    ts = frame_rows(ideal, scene)
+    ax = scene.figure.axes[0]
+    # Crank 0.05 m and rod 0.12 m in line on the x axis: the points sweep x from -0.05 to 0.17
+    # (10 frames of a turn pass the crank's dead centre within 18°: 1.1 % of the 0.22 m).
+    (block,) = ax.patches
+    length = block.get_width()
+    assert length == pytest.approx(IDEAL_SLIDER_SHARE * 0.22, rel=0.02)
+    assert block.get_height() == pytest.approx(IDEAL_SLIDER_ASPECT * length, rel=1e-12)
+    guides = [line for line in ax.lines if line.get_color() == "k"]
+    assert len(guides) == 2
+    travel = [ts["x_slider"].min() - 0.5 * length, ts["x_slider"].max() + 0.5 * length]
+    for k in (0, 4, 9):
+        scene.draw(k)
+        centre = block.get_corners().mean(axis=0)
+        assert centre == pytest.approx([ts["x_slider"].iloc[k], 0.0], abs=1e-12)
+        assert block.get_angle() == 0.0
+        for line, side in zip(guides, (1.0, -1.0), strict=True):  # the axis is global x
+            assert line.get_xdata() == pytest.approx(travel)
+            assert line.get_ydata() == pytest.approx([side * 0.5 * block.get_height()] * 2)
+
+
 def test_revolute_and_slider_clearances_draw_both_sets(tmp_path):
     pin = "joints.crank_rod.clearance"
     both = simulate_ok(

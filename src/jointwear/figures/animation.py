@@ -8,7 +8,8 @@ clearance joint is drawn as its guide's two surfaces and the slider as a rectang
 the slider's lateral offset and its tilt magnified by the same factor (the tilt as an angle,
 so the corners meet the drawn surfaces about when they meet the true ones, for small
 angles); the slider's body, and the points of bodies pinned to it by ideal revolute joints,
-follow the drawn slider.
+follow the drawn slider. An ideal translational joint, which has no size of its own, is drawn
+as a block of a set share of the mechanism's size between its guide's surfaces.
 """
 
 from __future__ import annotations
@@ -36,6 +37,8 @@ from .slider import crank_body
 
 NO_CRANK_SPAN = 0.04  # [s] the time animated when no constant-speed driver turns a crank
 CLEARANCE_SHARE = 0.04  # default: a radial clearance or a gap drawn as this share of the mechanism
+IDEAL_SLIDER_SHARE = 0.08  # an ideal translational joint's block: this share of the mechanism long
+IDEAL_SLIDER_ASPECT = 0.5  # and this share of its length high
 
 
 class _GifWriter(AbstractMovieWriter):
@@ -124,57 +127,95 @@ def _scale(model: Model, rows: pd.DataFrame, clearance_scale: float | None) -> f
     gaps += [j.clearance.clearance_gap for j in model.slider_joints]
     if not gaps:
         return 1.0
-    points = np.concatenate([o.reshape(-1, 2) for o in _outlines(model, rows, {}).values()])
-    return CLEARANCE_SHARE * max(np.ptp(points, axis=0)) / max(gaps)
+    return CLEARANCE_SHARE * _size(_outlines(model, rows, {})) / max(gaps)
+
+
+def _size(outlines: dict[str, np.ndarray]) -> float:
+    """The mechanism's size [m]: the larger side of the box its drawn points sweep."""
+    points = np.concatenate([o.reshape(-1, 2) for o in outlines.values()])
+    return float(max(np.ptp(points, axis=0)))
 
 
 class SliderPose(NamedTuple):
-    """A translational clearance joint as drawn over the frames (gap, offset, tilt magnified)."""
+    """A translational joint as drawn over the frames (a clearance's gap, offset, tilt scaled)."""
 
     centre: np.ndarray  # (frames, 2) slider's drawn centre [m]
     angle: np.ndarray  # (frames,) slider axis' drawn angle from the global x axis [rad]
     guide: np.ndarray  # (frames, 2 surfaces, 2 ends, 2) guide surfaces' drawn ends [m]
     corners: np.ndarray  # (frames, 4, 2) slider rectangle's drawn corners [m]
+    size: tuple[float, float]  # the drawn slider's length and height [m]
 
 
-def _slider_pose(
-    model: Model, rows: pd.DataFrame, joint: TranslationalJoint, scale: float
-) -> tuple[SliderPose, dict]:
-    """The drawn slider and guide of ``joint``, and the drawn tracks of the slider body's points.
+class _Guide(NamedTuple):
+    """A translational joint's guide over the frames: point, axis, normal, slide along it."""
 
-    The slider's centre lies at its true position along the guide and ``scale`` times its
-    lateral offset off the centreline; its axis at ``scale`` times its tilt to the guide's. The
-    guide's surfaces lie ``b + scale c`` off its centreline, over its length, or if unbounded
-    over the slider's travel in ``rows``. Returns the pose and {(body, point): track}.
-    """
+    point: np.ndarray  # (frames, 2) the guide body's joint point [m]
+    theta: np.ndarray  # (frames,) the guide axis' angle from the global x axis [rad]
+    u: np.ndarray  # (frames, 2) unit vector along the axis
+    v: np.ndarray  # (frames, 2) unit normal, u turned by +90 degrees
+    along: np.ndarray  # (frames,) the slider's joint point along the axis from the guide's [m]
+
+
+def _guide(model: Model, rows: pd.DataFrame, joint: TranslationalJoint) -> _Guide:
     guide, slider = joint.bodies
-    c = joint.clearance
-    a, b = 0.5 * c.slider_length, 0.5 * c.slider_height
     g = _track(model, rows, guide, joint.points[0])
     axis = np.asarray(joint.axis, dtype=float)
-    theta = _angle(rows, guide) + math.atan2(axis[1], axis[0])  # guide axis, global
+    theta = _angle(rows, guide) + math.atan2(axis[1], axis[0])
     u = np.column_stack([np.cos(theta), np.sin(theta)])
     v = np.column_stack([-u[:, 1], u[:, 0]])
     along = np.einsum("ij,ij->i", _track(model, rows, slider, joint.points[1]) - g, u)
-    lateral = rows[f"{joint.name}_lateral"].to_numpy()
-    tilt = rows[f"{joint.name}_tilt"].to_numpy()
-    centre = g + along[:, None] * u + scale * lateral[:, None] * v
-    angle = theta + scale * tilt
-    if c.guide_length:
-        ends = np.array([-0.5, 0.5]) * c.guide_length
-    else:
-        ends = np.array([along.min() - a, along.max() + a])
-    h = b + scale * c.clearance_gap
+    return _Guide(g, theta, u, v, along)
+
+
+def _pose(
+    frame: _Guide, centre: np.ndarray, angle: np.ndarray, size: tuple[float, float],
+    half_width: float, ends: np.ndarray,
+) -> SliderPose:  # fmt: skip
+    """A slider of ``size`` at ``centre`` and ``angle``, between two guide surfaces.
+
+    The surfaces lie ``half_width`` off the guide's centreline, from ``ends[0]`` to
+    ``ends[1]`` along it [m].
+    """
+    g, u, v = frame.point, frame.u, frame.v
     guide_ends = np.stack(
-        [np.stack([g + e * u + side * h * v for e in ends], axis=1) for side in (1.0, -1.0)],
+        [np.stack([g + e * u + side * half_width * v for e in ends], axis=1) for side in (1, -1)],
         axis=1,
     )
+    a, b = 0.5 * size[0], 0.5 * size[1]
     cos, sin = np.cos(angle)[:, None], np.sin(angle)[:, None]
     corner = np.array([(-a, -b), (a, -b), (a, b), (-a, b)])
     corners = np.stack(
         [centre[:, 0:1] + cos * corner[:, 0] - sin * corner[:, 1],
          centre[:, 1:2] + sin * corner[:, 0] + cos * corner[:, 1]], axis=2,
     )  # fmt: skip
+    return SliderPose(centre, angle, guide_ends, corners, size)
+
+
+def _travel(frame: _Guide, length: float) -> np.ndarray:
+    """The ends [m] of an unbounded guide: the slider's travel over the frames."""
+    return np.array([frame.along.min() - 0.5 * length, frame.along.max() + 0.5 * length])
+
+
+def _slider_pose(
+    model: Model, rows: pd.DataFrame, joint: TranslationalJoint, scale: float
+) -> tuple[SliderPose, dict]:
+    """The drawn slider and guide of a clearance ``joint``, and the slider body's points.
+
+    The slider's centre lies at its true position along the guide and ``scale`` times its
+    lateral offset off the centreline; its axis at ``scale`` times its tilt to the guide's. The
+    guide's surfaces lie ``b + scale c`` off its centreline, over its length, or if unbounded
+    over the slider's travel in ``rows``. Returns the pose and {(body, point): track}.
+    """
+    slider = joint.bodies[1]
+    c = joint.clearance
+    frame = _guide(model, rows, joint)
+    lateral = rows[f"{joint.name}_lateral"].to_numpy()
+    tilt = rows[f"{joint.name}_tilt"].to_numpy()
+    centre = frame.point + frame.along[:, None] * frame.u + scale * lateral[:, None] * frame.v
+    size = (c.slider_length, c.slider_height)
+    ends = np.array([-0.5, 0.5]) * c.guide_length if c.guide_length else _travel(frame, size[0])
+    half_width = 0.5 * c.slider_height + scale * c.clearance_gap
+    pose = _pose(frame, centre, frame.theta + scale * tilt, size, half_width, ends)
     # The slider body as drawn: turned by (scale - 1) tilt about its centre, moved with it.
     centre_local = np.asarray(model.point(slider, joint.points[1]), dtype=float)
     phi = _angle(rows, slider) + (scale - 1.0) * tilt
@@ -184,7 +225,21 @@ def _slider_pose(
         moved[(slider, name)] = centre + np.column_stack(
             [np.cos(phi) * dx - np.sin(phi) * dy, np.sin(phi) * dx + np.cos(phi) * dy]
         )
-    return SliderPose(centre, angle, guide_ends, corners), moved
+    return pose, moved
+
+
+def _ideal_slider_pose(
+    model: Model, rows: pd.DataFrame, joint: TranslationalJoint, length: float
+) -> SliderPose:
+    """An ideal translational joint: a block ``length`` [m] long on its guide's centreline.
+
+    Between guide surfaces over the block's travel in ``rows``: an ideal joint has no size of
+    its own.
+    """
+    frame = _guide(model, rows, joint)
+    size = (length, IDEAL_SLIDER_ASPECT * length)
+    centre = frame.point + frame.along[:, None] * frame.u
+    return _pose(frame, centre, frame.theta, size, 0.5 * size[1], _travel(frame, length))
 
 
 def _pinned(model: Model, moved: dict) -> dict:
@@ -220,6 +275,10 @@ def _positions(
     for joint in model.slider_joints:
         sliders[joint.name], points = _slider_pose(model, rows, joint, scale)
         moved |= points
+    ideal = [j for j in model.joints if isinstance(j, TranslationalJoint) and j.clearance is None]
+    if ideal:
+        length = IDEAL_SLIDER_SHARE * _size(_outlines(model, rows, {}))
+        sliders |= {j.name: _ideal_slider_pose(model, rows, j, length) for j in ideal}
     moved |= _pinned(model, moved)
     moved |= {(j.bodies[1], j.points[1]): journals[j.name] for j in joints}
     return _outlines(model, rows, moved), bearings, journals, sliders, scale
@@ -281,12 +340,11 @@ def mechanism_scene(
             ax.add_patch(Circle((0, 0), c.journal_radius, fc="w", lw=1.5, ec="tab:red", zorder=4)),
         )
     guides, blocks = {}, {}
-    for name in sliders:
-        c = model.joint(name).clearance
+    for name, pose in sliders.items():
         guides[name] = [ax.plot([], [], "k-", lw=1.5, zorder=3)[0] for _ in range(2)]
         blocks[name] = ax.add_patch(
             Rectangle(
-                (0, 0), c.slider_length, c.slider_height, rotation_point="center",
+                (0, 0), *pose.size, rotation_point="center",
                 fc="mistyrose", ec="tab:red", lw=1.5, alpha=0.8, zorder=1.5,
             )
         )  # fmt: skip
@@ -297,8 +355,8 @@ def mechanism_scene(
             f"clearance joints: journal offset × {scale:.3g} "
             f"(c = {c_mm:.3g} mm drawn as {c_mm * scale:.3g} mm)"
         )
-    if sliders:
-        gap_mm = max(model.joint(name).clearance.clearance_gap for name in sliders) * 1e3
+    if model.slider_joints:
+        gap_mm = max(j.clearance.clearance_gap for j in model.slider_joints) * 1e3
         titles.append(
             f"sliders: gap, offset and tilt × {scale:.3g} "
             f"(gap {gap_mm:.3g} mm drawn as {gap_mm * scale:.3g} mm)"
