@@ -120,7 +120,7 @@ def test_sector_panels_hold_every_snapshot_and_the_end(fourbar):
         np.testing.assert_array_equal(
             ax.lines[-1].get_ydata(), profile(fourbar.wear, surface) * per_m
         )
-    labels = [text.get_text() for text in journal.get_legend().get_texts()]
+    labels = [text.get_text() for text in bearing.get_legend().get_texts()]
     assert labels == ["after 0.8 turns", "after 1.5 turns", "after 2.2 turns", "after 2.5 turns"]
 
 
@@ -225,3 +225,19 @@ def test_a_length_from_a_nanometre_up_reads_from_1_to_999_in_its_unit(largest_m)
     from jointwear.figures.scaling import length_unit
 
     assert 1.0 <= largest_m * length_unit([largest_m])[1] < 1000.0
+
+
+def test_no_legend_of_the_run_figures_covers_an_axes(fourbar, ideal):
+    from jointwear.figures.plan import figure_plan
+
+    checked = set()
+    for name, draw in figure_plan(fourbar, ideal).items():
+        fig = draw()
+        fig.draw_without_rendering()  # lays the figure out
+        for legend in (ax.get_legend() for ax in fig.axes if ax.get_legend() is not None):
+            checked.add(name)
+            box = legend.get_window_extent()
+            for ax in fig.axes:
+                assert not box.overlaps(ax.get_window_extent()), (name, ax.get_title())
+    assert checked == {"energy", "cycle", "fig7_dynamics", "fig7d_orbit", "fig8_wear_sectors",
+                       "fig10_profile"}  # fmt: skip

@@ -19,6 +19,7 @@ from matplotlib.figure import Figure  # figures without pyplot: no global backen
 from ..model.sections import RevoluteJoint
 from ..results import Results
 from .files import save_pngs
+from .legends import LEGEND_ROOM, legend_beside
 from .plan import clearance_drawings, crank_driver
 from .scaling import length_unit
 
@@ -28,6 +29,7 @@ CLEARANCE_COLOR = "tab:red"
 IDEAL_COLOR = "0.15"
 SURFACES = ("journal", "bearing")  # the paper's Figs. 8-10 show the journal first
 MM = 1e3  # [mm/m]
+PEAK_ROOM = 1.1  # Fig. 8's depth axes reach this share above their automatic top
 
 
 PAPER_MODEL = "flores2009_fourbar"  # the paper's four-bar (examples/flores2009_fourbar*.toml)
@@ -134,7 +136,7 @@ def plot_dynamics(results: Results, ideal: Results | None = None) -> Figure:
         ts = ideal.timeseries
         ideal_rows = ts[(ts["time"] >= t0 - 1e-12) & (ts["time"] <= rows["time"].iloc[-1])]
         runs.append(("ideal joints", ideal_rows, IDEAL_COLOR, "--", 1.1))
-    fig = Figure(figsize=(7.5, 2.6 * len(panels) + 0.6), layout="constrained")
+    fig = Figure(figsize=(7.5 + LEGEND_ROOM, 2.6 * len(panels) + 0.6), layout="constrained")
     axes = fig.subplots(len(panels), 1, sharex=True, squeeze=False)[:, 0]
     for ax, (column, title, ylabel), letter in zip(axes, panels, "abc", strict=False):
         for label, data, color, style, width in runs:
@@ -144,7 +146,7 @@ def plot_dynamics(results: Results, ideal: Results | None = None) -> Figure:
         ax.set_ylabel(ylabel)
         ax.set_title(f"({letter}) {title}", loc="left", fontsize="medium")
         ax.grid(alpha=0.3)
-    axes[0].legend(loc="best")
+    legend_beside(axes[0])
     if speed:
         span = np.degrees(speed * (rows["time"].iloc[-1] - t0))
         axes[-1].set_xlim(0.0, span)
@@ -167,7 +169,7 @@ def plot_orbit(results: Results) -> Figure:
     thin and light, the last two crank turns dark.
     """
     joints = _require_joints(results)
-    fig = Figure(figsize=(5.5 * len(joints), 5.8), layout="constrained")
+    fig = Figure(figsize=(5.5 * len(joints) + LEGEND_ROOM, 5.8), layout="constrained")
     axes = fig.subplots(1, len(joints), squeeze=False)[0]
     last, _, speed = _window(results, 2.0)
     df = results.timeseries
@@ -191,7 +193,7 @@ def plot_orbit(results: Results) -> Figure:
         ax.set_ylabel("$e_y$ (global y) [mm]")
         ax.set_title(f"{name}\njournal ({joint.bodies[1]}) in bearing ({joint.bodies[0]})")
         ax.grid(alpha=0.3)
-        ax.legend(loc="upper right", fontsize="small")
+    legend_beside(ax)  # the last joint's: the same three entries for each
     fig.suptitle(f"{results.model.name}: journal-centre orbit{_paper(results, '7d')}")
     return fig
 
@@ -235,7 +237,7 @@ def plot_wear_sectors(results: Results) -> Figure:
     profiles = _profiles_over_time(results)
     unit, per_m = length_unit(results.wear["depth_m"])
     colors = colormaps["viridis"](np.linspace(0.85, 0.0, len(profiles)))
-    fig = Figure(figsize=(11.0, 3.8 * len(joints) + 0.5), layout="constrained")
+    fig = Figure(figsize=(11.0 + LEGEND_ROOM, 3.8 * len(joints) + 0.5), layout="constrained")
     axes = fig.subplots(len(joints), 2, squeeze=False)
     for row, joint in zip(axes, joints, strict=True):
         for ax, surface in zip(row, SURFACES, strict=True):
@@ -250,9 +252,9 @@ def plot_wear_sectors(results: Results) -> Figure:
             ax.set_ylabel(f"wear depth [{unit}]")
             ax.set_xlim(0.0, 360.0)
             ax.set_xticks(np.arange(0, 361, 45))
-            ax.set_ylim(bottom=0.0)
+            ax.set_ylim(0.0, PEAK_ROOM * ax.get_ylim()[1])  # room for the peak's note
             ax.grid(alpha=0.3)
-        row[0].legend(loc="upper left", fontsize="small")
+        legend_beside(row[-1])
     fig.suptitle(f"{results.model.name}: wear depth per sector{_paper(results, '8')}")
     return fig
 
@@ -316,7 +318,7 @@ def plot_wear_profile(results: Results) -> Figure:
     model does, and ``s`` from ``wear_exaggeration``. Drawn in each surface's body frame.
     """
     joints = _require_joints(results)
-    fig = Figure(figsize=(10.0, 5.2 * len(joints) + 0.5), layout="constrained")
+    fig = Figure(figsize=(10.0 + LEGEND_ROOM, 5.2 * len(joints) + 0.5), layout="constrained")
     axes = fig.subplots(len(joints), 2, squeeze=False)
     for row, joint in zip(axes, joints, strict=True):
         scale = wear_exaggeration(results, joint.name)
@@ -351,7 +353,7 @@ def plot_wear_profile(results: Results) -> Figure:
             ax.set_ylabel(f"{body} y [mm]")
             ax.set_title(f"{joint.name}: {surface} ({body}), R = {nominal * MM:.4g} mm")
             ax.grid(alpha=0.3)
-            ax.legend(loc="upper right", fontsize="small")
+        legend_beside(ax)
     fig.suptitle(
         f"{results.model.name}: initial and worn profiles, wear exaggerated{_paper(results, '10')}"
     )

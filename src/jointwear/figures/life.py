@@ -20,6 +20,7 @@ from ..model import Model
 from ..studies.life.files import FIGURE_FILES
 from ..studies.life.records import GROWTH_MARK, cycles_at, driver_columns
 from .files import save_png
+from .legends import LEGEND_ROOM, legend_beside
 from .scaling import length_unit
 
 PROFILE_COUNTS = 5  # profiles drawn: at about 1/5, 2/5, ... of the cycles reached
@@ -39,7 +40,7 @@ def plot_life_wear(
     ``band`` (life_band.csv) shades the clearance growth's band; ``marks`` (the summary's
     ``clearance_joints``) gives the band of the cycles to 50 % growth for the annotation.
     """
-    fig = Figure(figsize=(8.0, 9.0), layout="constrained")
+    fig = Figure(figsize=(8.0 + LEGEND_ROOM, 9.0), layout="constrained")
     depth, force, torque = fig.subplots(3, 1, sharex=True)
     cycles = table["cycles"].to_numpy()
     lengths = [c for c in table if c.endswith(LENGTH_COLUMNS)]
@@ -73,9 +74,9 @@ def plot_life_wear(
     range_column = driver_columns(model, driver)[1]
     torque.plot(cycles, table[range_column], ".-", color="k")
     depth.set_ylabel(f"wear depth [{unit}]")
-    depth.legend(loc="upper left", fontsize="small")
+    legend_beside(depth)
     force.set_ylabel("peak contact force\nof the measured cycles [kN]")
-    force.legend(loc="upper left", fontsize="small")
+    legend_beside(force)
     kind, unit = ("torque", "N m") if range_column.startswith("torque") else ("force", "N")
     torque.set_ylabel(f"{kind} range of driver\n'{driver}', max - min [{unit}]")
     torque.set_xlabel("cycles")

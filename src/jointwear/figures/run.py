@@ -14,6 +14,7 @@ from matplotlib.figure import Figure  # figures without pyplot: no global backen
 
 from ..results import Results
 from ..results.energy_balance import energy_balance, unaccounted
+from .legends import LEGEND_ROOM, legend_beside
 from .plan import crank_driver
 
 STILL_SPEED = 1e-9  # [rad/s] a body whose angular velocity stays below this does not turn
@@ -42,7 +43,7 @@ def plot_cycle(results: Results) -> Figure:
         for b in results.model.bodies
         if b.name != driven and np.abs(turn[f"omega_{b.name}"]).max() > STILL_SPEED
     ]
-    fig = Figure(figsize=(7.0, 8.0), layout="constrained")
+    fig = Figure(figsize=(7.0 + LEGEND_ROOM, 8.0), layout="constrained")
     axes = fig.subplots(3, 1, sharex=True)
     for body in bodies:
         axes[0].plot(angle[order], turn[f"omega_{body}"].to_numpy()[order], label=body)
@@ -55,7 +56,7 @@ def plot_cycle(results: Results) -> Figure:
     axes[2].set_xlim(0.0, 360.0)
     axes[2].set_xticks(np.arange(0, 361, 45))
     if bodies:
-        axes[0].legend(loc="best")
+        legend_beside(axes[0])
     for ax in axes:
         ax.grid(alpha=0.3)
         ax.axhline(0.0, color="0.6", lw=0.6)
@@ -73,7 +74,7 @@ def plot_energy(results: Results) -> Figure:
     """
     df = results.timeseries
     model = results.model
-    fig = Figure(figsize=(7.0, 6.5), layout="constrained")
+    fig = Figure(figsize=(7.0 + LEGEND_ROOM, 6.5), layout="constrained")
     top, bottom = fig.subplots(2, 1, sharex=True, height_ratios=(2, 1))
     parts = [c for c in ("energy_kinetic", "energy_potential", "energy_contact") if c in df]
     for column in parts:
@@ -91,7 +92,7 @@ def plot_energy(results: Results) -> Figure:
         top.plot(df["time"], df[parts].sum(axis=1), label="total", color="k")
         title = "energy" + (f" (no balance: {why})" if why else "")
     top.set_ylabel("energy [J]")
-    top.legend(loc="upper left", fontsize="small", framealpha=0.8)
+    legend_beside(top)
     bottom.semilogy(df["time"], np.maximum(df["constraint_violation"], 1e-18))
     bottom.set_ylabel("constraint violation |Φ| [m]")
     bottom.set_xlabel("time [s]")

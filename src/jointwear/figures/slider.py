@@ -23,6 +23,7 @@ from ..model.sections import RevoluteJoint, TranslationalJoint
 from ..model.slide_clearance import SlideClearance
 from ..results import Results
 from .files import save_pngs
+from .legends import LEGEND_ROOM, legend_beside
 from .plan import crank_driver, slider_drawings
 from .scaling import length_unit
 
@@ -121,7 +122,7 @@ def plot_slider_motion(results: Results) -> Figure:
     joints = _joints(results)
     df = results.timeseries
     x = crank_abscissa(results)
-    fig = Figure(figsize=(8.0, 4.6 * len(joints) + 0.6), layout="constrained")
+    fig = Figure(figsize=(8.0 + LEGEND_ROOM, 4.6 * len(joints) + 0.6), layout="constrained")
     axes = fig.subplots(2 * len(joints), 1, sharex=True, squeeze=False)[:, 0]
     for k, joint in enumerate(joints):
         lateral, tilt = axes[2 * k], axes[2 * k + 1]
@@ -137,7 +138,7 @@ def plot_slider_motion(results: Results) -> Figure:
             loc="left",
             fontsize="medium",
         )
-        lateral.legend(loc="upper right", fontsize="small")
+        legend_beside(lateral)
         angle = df[f"{joint.name}_tilt"].to_numpy() * MRAD
         tilt.plot(x.values, angle, lw=0.9, color="tab:purple")
         limit = tilt_limit(joint.clearance) * MRAD
@@ -145,7 +146,7 @@ def plot_slider_motion(results: Results) -> Figure:
             for sign in (1.0, -1.0):
                 label = f"opposite corners touch: ±{limit:.3g} mrad" if sign > 0 else None
                 tilt.axhline(sign * limit, ls="--", color="k", lw=0.8, label=label)
-            tilt.legend(loc="upper right", fontsize="small")
+            legend_beside(tilt)
         else:
             tilt.text(
                 0.99,
@@ -180,7 +181,7 @@ def plot_corner_forces(results: Results) -> Figure:
     joints = _joints(results)
     df = results.timeseries
     x = crank_abscissa(results)
-    fig = Figure(figsize=(10.0, 4.8 * len(joints) + 0.6), layout="constrained")
+    fig = Figure(figsize=(10.0 + LEGEND_ROOM, 4.8 * len(joints) + 0.6), layout="constrained")
     axes = fig.subplots(2 * len(joints), 2, sharex=True, sharey=True, squeeze=False)
     for k, joint in enumerate(joints):
         for r, row in enumerate(CORNER_GRID):
@@ -195,7 +196,7 @@ def plot_corner_forces(results: Results) -> Figure:
                         x.values, edge.to_numpy(), lw=0.9, color=EDGE_COLOR,
                         label=f"guide edge {corner}",
                     )  # fmt: skip
-                    ax.legend(loc="upper right", fontsize="small")
+                    legend_beside(ax)
                 ax.set_title(title, loc="left", fontsize="medium")
                 ax.grid(alpha=0.3)
             axes[2 * k + r, 0].set_ylabel("normal force [N]")
@@ -248,7 +249,7 @@ def _wear_panel(
     ax.set_xlim(-0.5 * length * MM, 0.5 * length * MM)
     ax.set_ylim(bottom=0.0)
     ax.grid(alpha=0.3)
-    ax.legend(loc="upper right", fontsize="small")
+    legend_beside(ax)
 
 
 def plot_guide_wear(results: Results) -> Figure:
@@ -260,7 +261,9 @@ def plot_guide_wear(results: Results) -> Figure:
     joints = _joints(results)
     t_end = float(results.timeseries["time"].iloc[-1])
     columns = 2 if any(j.clearance.guide_length for j in joints) else 1
-    fig = Figure(figsize=(5.5 * columns + 1.0, 4.2 * len(joints) + 0.6), layout="constrained")
+    fig = Figure(
+        figsize=(5.5 * columns + 1.0 + LEGEND_ROOM, 4.2 * len(joints) + 0.6), layout="constrained"
+    )
     axes = fig.subplots(len(joints), columns, squeeze=False)
     for row, joint in zip(axes, joints, strict=True):
         c = joint.clearance
