@@ -24,3 +24,9 @@ def _script(name: str):
 def test_the_contact_law_table_rows_are_what_the_script_prints(case):
     row = _script("contact_laws").row(case, 1.0)  # the README's table: 1 s runs
     assert row in README.splitlines(), f"README.md lacks {row!r}: run benchmarks/contact_laws.py"
+
+
+@pytest.mark.parametrize(("c_mm", "mu"), [(0.2, 0.1), (0.1, 0.0)])  # the paper's case, and one
+def test_the_sweep_table_rows_are_what_the_script_prints(c_mm, mu):
+    row = _script("sweep_table").row(c_mm, mu)  # the README's table: 1 s runs
+    assert row in README.splitlines(), f"README.md lacks {row!r}: run benchmarks/sweep_table.py"
