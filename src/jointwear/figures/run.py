@@ -80,10 +80,11 @@ def plot_energy(results: Results) -> Figure:
     for column in parts:
         top.plot(df["time"], df[column], label=column.removeprefix("energy_"), lw=1.0)
     why = unaccounted(model)
-    if why is None and model.drivers:
+    if why is None and (model.drivers or model.has_clearance):
         flows = energy_balance(model, df)
         top.plot(flows["time"], flows["dissipated"], label="dissipated (contacts)", lw=1.0)
-        top.plot(flows["time"], flows["driver_work"], label="driver work", lw=1.0)
+        if model.drivers:
+            top.plot(flows["time"], flows["driver_work"], label="driver work", lw=1.0)
         top.plot(flows["time"], flows["balance"], color="k", lw=1.5,
                  label="balance: stored + dissipated - work")  # fmt: skip
         interval = model.solver.output_interval

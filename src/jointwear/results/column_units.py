@@ -55,7 +55,8 @@ JOINT = {
     "damping_power": "W",
     "lateral": "m",  # slider's offset across its guide
     "tilt": "rad",  # slider's tilt in its guide
-}  # <joint>_<quantity>; a slider's corner and edge forces are <joint>_fn_<contact> [N]
+}  # <joint>_<quantity>; a slider's corner and edge forces are <joint>_fn_<contact> [N],
+# their sliding speeds <joint>_vt_<contact> [m/s]
 NAMED = {
     "time": "s",
     "constraint_violation": "m",  # 2-norm of the position constraints (m, and rad for angles)
@@ -133,6 +134,8 @@ def _model_unit(column: str, model: Model) -> str | None:
             return JOINT[quantity]
         if quantity.startswith("fn_"):  # a slider's contact force
             return "N"
+        if quantity.startswith("vt_"):  # and the sliding speed there
+            return "m/s"
     return None
 
 

@@ -18,8 +18,6 @@ DISSIPATION = ("damping_power", "friction_power", "film_power")  # per joint, [W
 
 def unaccounted(model: Model) -> str | None:
     """What moves energy in ``model`` that the time series does not hold, or None."""
-    if model.slider_joints:
-        return "its translational clearance joints' dissipation is not in the time series"
     for driver in model.drivers:
         if driver.type != "angle":
             return f"driver '{driver.name}' moves a distance: its work is not in the time series"
@@ -51,7 +49,7 @@ def energy_balance(model: Model, timeseries: pd.DataFrame) -> pd.DataFrame:
             speed = speed - df[f"omega_{driver.relative_to}"].to_numpy()
         power_in += df[f"torque_{driver.name}"].to_numpy() * speed
     power_lost = np.zeros_like(time)
-    for joint in model.clearance_joints:
+    for joint in (*model.clearance_joints, *model.slider_joints):
         for quantity in DISSIPATION:
             column = f"{joint.name}_{quantity}"
             if column in df:

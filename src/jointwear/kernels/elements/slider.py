@@ -141,7 +141,7 @@ N_IMPACT_INFO = 4
 
 # Time-series columns per joint: the slider's lateral offset and tilt, the force on it, and
 # each contact's normal force (the edges' only for a finite guide).
-OUTPUT_NAMES = ("lateral", "tilt", "fx", "fy")
+OUTPUT_NAMES = ("lateral", "tilt", "fx", "fy", "friction_power", "damping_power")
 DEGREES_OF_FREEDOM = 2  # the lateral offset and the tilt
 
 
@@ -203,9 +203,17 @@ def make_sliders(
 
 
 def output_names(finite_guide: bool) -> tuple[str, ...]:
-    """The time-series columns of one joint, without its name (Python)."""
+    """The time-series columns of one joint, without its name (Python).
+
+    ``OUTPUT_NAMES``, then each contact's normal force ``fn_<contact>`` and sliding speed
+    ``vt_<contact>`` (slider past guide along the surface).
+    """
     contacts = CONTACT_NAMES if finite_guide else CONTACT_NAMES[:CORNERS]
-    return (*OUTPUT_NAMES, *(f"fn_{name}" for name in contacts))
+    return (
+        *OUTPUT_NAMES,
+        *(f"fn_{name}" for name in contacts),
+        *(f"vt_{name}" for name in contacts),
+    )
 
 
 @njit(cache=True, no_cpython_wrapper=True)
@@ -461,20 +469,30 @@ def write_outputs(table, scratch, row, c):
 
     Returns the next free column.
     """
+    n = len(OUTPUT_NAMES)
     for k in range(table.ints.shape[0]):
         row[c] = scratch.pose[k, 0]
         row[c + 1] = scratch.pose[k, 1]
         fx = 0.0
         fy = 0.0
+        friction = 0.0
+        damping = 0.0
         contacts = SLOTS if table.ints[k, I_ENDS] else CORNERS
         for i in range(contacts):
-            f = _force_on_slider(scratch.contact[k, i])
+            contact = scratch.contact[k, i]
+            f = _force_on_slider(contact)
             fx += f[0]
             fy += f[1]
-            row[c + 4 + i] = scratch.contact[k, i, C_FN]
+            if contact[C_FN] > 0.0:  # the powers the loop integrates into its totals
+                friction -= contact[C_FT] * contact[C_VT]
+                damping += (contact[C_FN] - contact[C_ELASTIC]) * contact[C_DDOT]
+            row[c + n + i] = contact[C_FN]
+            row[c + n + contacts + i] = contact[C_VT]
         row[c + 2] = fx
         row[c + 3] = fy
-        c += 4 + contacts
+        row[c + 4] = friction
+        row[c + 5] = damping
+        c += n + 2 * contacts
     return c
 
 
