@@ -233,3 +233,39 @@ def test_a_file_the_user_changed_since_is_the_users(tmp_path):
     # A run without clearance joints would remove the earlier wear table: not this one.
     assert invoke("run", PENDULUM, "--out", out, *SHORT).exit_code == 0
     assert (out / "wear.csv").read_text() == "my own edits"
+
+
+def test_an_interrupt_lost_in_a_native_callback_is_delivered_again(capsys):
+    """What Python does with a KeyboardInterrupt raised inside a ctypes callback (numba's
+    compiler writing its cache): it calls sys.unraisablehook, and the exception is gone."""
+    import ctypes
+
+    from jointwear.interrupts import redeliver_lost_interrupts
+
+    received = []
+    previous_handler = signal.signal(signal.SIGINT, lambda signum, frame: received.append(signum))
+    previous_hook = sys.unraisablehook
+    try:
+        redeliver_lost_interrupts()
+
+        @ctypes.CFUNCTYPE(None)
+        def callback():
+            raise KeyboardInterrupt
+
+        callback()  # native code calling back into Python: the exception cannot pass
+        for _ in range(100):  # the handler runs at the next bytecodes of the main thread
+            if received:
+                break
+            time.sleep(0.001)
+        assert received == [signal.SIGINT]
+
+        @ctypes.CFUNCTYPE(None)
+        def failing():
+            raise ValueError("not an interrupt")
+
+        failing()
+        assert received == [signal.SIGINT]  # other errors are reported as Python does
+        assert "ValueError: not an interrupt" in capsys.readouterr().err
+    finally:
+        sys.unraisablehook = previous_hook
+        signal.signal(signal.SIGINT, previous_handler)

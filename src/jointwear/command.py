@@ -25,7 +25,10 @@ def _interrupt(signum: int, frame: object) -> None:
 
 def main(argv: list[str] | None = None) -> None:
     """Run the command line ``argv`` (default ``sys.argv[1:]``) and exit with its code."""
+    from .interrupts import cut_short, redeliver_lost_interrupts
+
     signal.signal(signal.SIGTERM, _interrupt)
+    redeliver_lost_interrupts()
     try:
         code = _run(argv)
     except SystemExit as exit_request:  # typer ends every command this way
@@ -33,8 +36,6 @@ def main(argv: list[str] | None = None) -> None:
     except KeyboardInterrupt:
         _say("interrupted")
         code = INTERRUPTED
-    from .interrupts import cut_short
-
     if cut_short() or code == INTERRUPTED:  # the interpreter's clean-up could crash on what
         _flush()  # the interrupt left half-built, or end the process on the interrupt again
         os._exit(code if isinstance(code, int) else 1 if code else 0)

@@ -86,6 +86,25 @@ def _quiet(unraisable: object) -> None:
     """An ``sys.unraisablehook`` that says nothing."""
 
 
+def redeliver_lost_interrupts() -> None:
+    """From now on, an interrupt raised where Python cannot pass it on is delivered again.
+
+    A signal handler that raises ``KeyboardInterrupt`` while native code is calling back into
+    Python (numba's compiler writing its cache through a ctypes callback) has its exception
+    printed as "ignored" and lost: the process would go on as if never interrupted. Under
+    this ``sys.unraisablehook`` such an interrupt is raised again as a SIGINT instead, which
+    Python then handles in ordinary code; any other unraisable exception is printed as usual.
+    """
+    sys.unraisablehook = _redeliver
+
+
+def _redeliver(unraisable: sys.UnraisableHookArgs) -> None:
+    if unraisable.exc_type is not None and issubclass(unraisable.exc_type, KeyboardInterrupt):
+        signal.raise_signal(signal.SIGINT)
+        return
+    sys.__unraisablehook__(unraisable)
+
+
 def cut_short() -> bool:
     """Whether an interrupt was raised inside an ``interruptible`` block of this process.
 
