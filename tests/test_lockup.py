@@ -55,3 +55,14 @@ def test_run_stops_at_the_lock_up_with_its_status(name):
 def test_mechanisms_that_turn_are_not_locked(name):
     result = CliRunner().invoke(app, ["check", str(EXAMPLES / name)])
     assert result.exit_code == 0, result.output
+
+
+def test_without_the_check_the_run_meets_the_lock_up_unnamed():
+    # check_lock_up=False is for a mechanism known to pass (run.py's ideal companion); here
+    # it shows the check is what names the lock-up: the run ends at the same pose, singular.
+    model = jw.load_model(
+        EXAMPLES / "slider_crank.toml", overrides=[*SHORT_ROD, "solver.t_end=0.01"]
+    )
+    res = jw.simulate(model, check_lock_up=False)
+    assert res.status == "singular", res.message
+    assert res.summary["stats"]["t_reached"] == pytest.approx(LIMIT / SPEED, rel=1e-4)

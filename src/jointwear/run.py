@@ -77,7 +77,8 @@ def run(
         companion = None
         if ideal and model.has_clearance and results.status == SUCCESS:
             try:
-                companion = simulate(model.ideal())
+                # the same all-ideal mechanism as the run's own lock-up check, which it passed
+                companion = simulate(model.ideal(), check_lock_up=False)
                 status = companion.status
             except KeyboardInterrupt:  # during its set-up: the run above is kept
                 status = INTERRUPTED

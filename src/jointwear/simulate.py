@@ -148,7 +148,11 @@ def _by_reference(*tables: NamedTuple) -> tuple[StructProxy, ...]:
 
 
 def simulate(
-    model: Model, *, progress: Progress | None = None, initial: RunState | None = None
+    model: Model,
+    *,
+    progress: Progress | None = None,
+    initial: RunState | None = None,
+    check_lock_up: bool = True,
 ) -> Results:
     """Simulate ``model`` for ``model.solver.t_end`` seconds.
 
@@ -163,6 +167,10 @@ def simulate(
         and slider centred and unworn; or the state another run of the same model ended in
         (``Results.final``), possibly with other worn profiles (``RunState.with_wear``). The
         run then goes on from ``initial.time`` to ``initial.time + t_end``.
+    check_lock_up
+        Before a run from t = 0, solve the all-ideal mechanism over the drivers' first cycle
+        and stop the run where it locks up (``jointwear.lockup``). False skips that check,
+        for a model known to pass it: the ideal companion of a run that did.
 
     Returns
     -------
@@ -188,7 +196,7 @@ def simulate(
         t0 = 0.0 if initial is None else initial.time
         t_end = t0 + solver.t_end
         lock = None  # a driven mechanism's lock-up: the run stops there with its status
-        if initial is None:
+        if initial is None and check_lock_up:
             lock = find_lock_up(model, ideal, assembly, lock_up_span(model))
             t_end = t_end if lock is None else min(t_end, lock.time)
         output_times = _output_times(t0, solver.t_end, solver.output_interval)

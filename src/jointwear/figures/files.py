@@ -8,7 +8,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from ..io import make_folder, write_atomic
-from .render import DPI, render_pngs
+from .render import DPI, PNG_COMPRESSION, render_pngs
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -19,7 +19,8 @@ Drawings = Mapping[str, Callable[[], "Figure"]]  # file name without .png -> dra
 def save_png(figure: Figure, path: Path, dpi: int = DPI) -> Path:
     """Write ``figure`` to ``path`` as PNG, whole or not at all; return the path."""
     make_folder(path.parent)
-    return write_atomic(path, lambda temporary: figure.savefig(temporary, format="png", dpi=dpi))
+    options = {"format": "png", "dpi": dpi, "pil_kwargs": {"compress_level": PNG_COMPRESSION}}
+    return write_atomic(path, lambda temporary: figure.savefig(temporary, **options))
 
 
 def save_pngs(drawings: Drawings, folder: Path, dpi: int = DPI) -> list[Path]:

@@ -1,17 +1,18 @@
 """Figures to PNG bytes, drawn by helper processes on the machine's other cores.
 
 Drawing is matplotlib's layout and text work, a few tenths of a second per figure, so a run's
-seven or eight figures take seconds one after another. Within ``drawing_helper``, two Python
-processes are started at once (spawned, not forked: the run's threads make a fork unsafe);
-they import matplotlib while the run computes, and then draw the figures ``start_pngs`` is
-given, side by side, while the caller goes on. Writing the files stays with the caller, so the
-file rule of ``jointwear.io`` holds in one process.
+seven or eight figures take seconds one after another. ``drawing_helper`` starts a fork server
+(``multiprocessing``'s "forkserver": a fresh Python process, so the run's threads make no
+fork unsafe) that imports matplotlib and the plotting modules once, while the run computes.
+``start_pngs`` then forks two helpers from it, which draw the figures side by side while the
+caller goes on. Writing the files stays with the caller, so the file rule of ``jointwear.io``
+holds in one process.
 """
 
 from __future__ import annotations
 
-import gc
 import multiprocessing
+import multiprocessing.forkserver
 import os
 import signal
 import threading
@@ -19,6 +20,7 @@ from collections.abc import Callable, Iterator, Sequence
 from concurrent.futures import Future, ProcessPoolExecutor
 from concurrent.futures.process import BrokenProcessPool
 from contextlib import contextmanager
+from importlib import import_module
 from io import BytesIO
 from typing import TYPE_CHECKING
 
@@ -29,19 +31,21 @@ DPI = 150  # resolution of the PNGs [dots per inch]
 STOP_SIGNALS = {signal.SIGINT, signal.SIGTERM}
 HELPERS = min(2, os.cpu_count() or 1)  # processes that draw (the caller waits meanwhile)
 HELPER_NICENESS = 5  # added to the helpers' niceness: the run they wait for comes first
+PNG_COMPRESSION = 1  # zlib level of the PNGs: level 6 (the default) takes 20% of the drawing
+PRELOAD = f"{__package__}.helper_imports"  # the fork server imports it before it forks
 
 _helper: ProcessPoolExecutor | None = None  # the open drawing_helper's processes
 
 
 @contextmanager
 def drawing_helper(wanted: bool = True) -> Iterator[None]:
-    """Within the block, helper processes (started now) draw the figures.
+    """Within the block, helper processes draw the figures; their fork server starts now.
 
     Nothing is started unless ``wanted``, in the main thread, on a POSIX machine with two
-    cores or more. The helper never acts on Ctrl-C or SIGTERM (this process does, as
-    ``jointwear.interrupts`` says), and ends with the block. For the command line: a spawned
-    process imports the ``__main__`` module of a script not guarded by
-    ``if __name__ == "__main__"``.
+    cores or more. The helpers never act on Ctrl-C or SIGTERM (this process does, as
+    ``jointwear.interrupts`` says), and end with the block; the fork server, idle, with this
+    process. For the command line: a helper imports the ``__main__`` module of a script not
+    guarded by ``if __name__ == "__main__"``.
     """
     global _helper
     main = threading.current_thread() is threading.main_thread()  # signals are set there only
@@ -49,12 +53,11 @@ def drawing_helper(wanted: bool = True) -> Iterator[None]:
     if not (wanted and main and posix) or _helper is not None or (os.cpu_count() or 1) < 2:
         yield
         return
-    with _signals_ignored_by_children():
-        helper = ProcessPoolExecutor(
-            HELPERS, mp_context=multiprocessing.get_context("spawn"), initializer=_prepare_helper
-        )
-        for _ in range(HELPERS):
-            helper.submit(int)  # starts the processes now, while the caller computes
+    context = multiprocessing.get_context("forkserver")
+    context.set_forkserver_preload([PRELOAD])
+    with _signals_ignored_by_children():  # the helpers inherit the server's dispositions
+        multiprocessing.forkserver.ensure_running()  # returns at once; the server imports
+    helper = ProcessPoolExecutor(HELPERS, mp_context=context, initializer=_prepare_helper)
     _helper = helper
     try:
         yield
@@ -120,17 +123,17 @@ def start_pngs(
 
 def _png(draw: Callable[[], Figure], dpi: int) -> bytes:
     buffer = BytesIO()
-    draw().savefig(buffer, format="png", dpi=dpi)
+    draw().savefig(buffer, format="png", dpi=dpi, pil_kwargs={"compress_level": PNG_COMPRESSION})
     return buffer.getvalue()
 
 
 def _prepare_helper() -> None:
-    """In a helper: yield the CPU to the run, and import what drawing needs before it is asked.
+    """In a helper: ignore stop signals, yield the CPU to the run, and have what drawing needs.
 
-    The imports' objects are then set apart from the garbage collector (``gc.freeze``): they
-    live as long as the helper, and collecting them would slow drawing and the helper's exit.
+    The fork server has imported ``helper_imports`` (unless another user of the server
+    started it first; then the helper imports it now).
     """
+    for stop in STOP_SIGNALS:
+        signal.signal(stop, signal.SIG_IGN)
     os.nice(HELPER_NICENESS)
-    from . import clearance, run, slider  # noqa: F401
-
-    gc.freeze()
+    import_module(PRELOAD)
