@@ -247,3 +247,12 @@ def test_export_command_writes_the_file(piston_folder, tmp_path):
     result = runner.invoke(app, ["export", str(piston_folder), str(tmp_path / "run.txt")])
     assert result.exit_code == 2
     assert ".nc or .mat" in result.stderr
+
+
+def test_plot_of_several_columns_puts_the_legend_beside_the_axes(fourbar):
+    fig = fourbar.plot("omega_follower", "omega_coupler")
+    fig.draw_without_rendering()  # lays the figure out
+    (ax,) = fig.axes
+    box = ax.get_legend().get_window_extent()
+    assert box.x0 >= ax.get_window_extent().x1  # it hides no part of the lines
+    assert fig.bbox.contains(box.x1, box.y0)

@@ -559,3 +559,15 @@ def test_link_on_the_command_line_and_in_a_sweep_file(tmp_path):
     plan = make_plan([], sweep_file)
     assert plan.link == {SPEED: ['"2500 rpm"', '"5000 rpm"'], "bodies.crank.mass": ["1", "2"]}
     assert plan.vary == {}
+
+
+def test_the_comparison_figures_legend_stands_beside_its_axes(local_sweep):
+    _, out = local_sweep
+    table = pd.read_parquet(out / "sweep.parquet")
+    given = {FRICTION: {0.05: "0.05", 0.1: "0.1"}, RADIUS: {0.01: "10.0 mm", 0.0101: "10.1 mm"}}
+    figure = plot_sweep(table, "coupler_follower.max_wear_depth_journal_m", given)
+    figure.draw_without_rendering()  # lays the figure out
+    ax = figure.axes[0]
+    box = ax.get_legend().get_window_extent()
+    assert box.x0 >= ax.get_window_extent().x1  # right of the axes: it hides no point
+    assert figure.bbox.contains(box.x1, box.y0)  # and within the figure

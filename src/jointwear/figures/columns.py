@@ -6,6 +6,8 @@ from typing import TYPE_CHECKING
 
 from matplotlib.figure import Figure  # figures without pyplot: no global backend switch
 
+from .legends import LEGEND_ROOM, legend_beside
+
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
 
@@ -35,8 +37,9 @@ def plot_columns(
     """
     units = results.units("timeseries")
     table = results.timeseries
-    if ax is None:
-        fig = Figure(figsize=(7.0, 4.0), layout="constrained")
+    own = ax is None  # a figure of its own has room for the legend beside the axes
+    if own:
+        fig = Figure(figsize=(7.0 + LEGEND_ROOM * (len(columns) > 1), 4.0), layout="constrained")
         ax = fig.subplots()
         ax.set_title(results.model.name)
     else:
@@ -47,7 +50,9 @@ def plot_columns(
     shown = {units[c] for c in columns}
     if len(shown) == 1:  # one unit: it labels the axis
         ax.set_ylabel(_label(columns[0] if len(columns) == 1 else "", units, shown.pop()))
-    if len(columns) > 1:
+    if len(columns) > 1 and own:
+        legend_beside(ax)
+    elif len(columns) > 1:  # in the caller's axes, whose figure's layout is theirs
         ax.legend(loc="best")
     ax.grid(alpha=0.3)
     return fig

@@ -17,6 +17,7 @@ from matplotlib.figure import Figure
 
 from ..io import ForeignFileError, remove
 from .files import save_png
+from .legends import LEGEND_ROOM, legend_beside
 
 LOG_AXIS_RATIO = 100.0  # positive values spanning more than this get a logarithmic axis
 LONG_LENGTH = (1e-3, "m", 1.0)  # lengths in a column reaching this [m] are drawn in metres
@@ -55,19 +56,18 @@ def plot_sweep(
     numeric_x = pd.api.types.is_numeric_dtype(table[x_path])
     categories = list(dict.fromkeys(table[x_path]))
     label, factor = quantity(column, pd.to_numeric(table[column], errors="coerce").abs().max())
-    fig = Figure(figsize=(7.0, 4.5), layout="constrained")
-    ax = fig.subplots()
     groups = table.groupby(others, sort=False, dropna=False) if others else [((), table)]
-    lines = 0
+    legend = bool(others) and len(groups) <= MAX_LEGEND
+    fig = Figure(figsize=(7.0 + LEGEND_ROOM * legend, 4.5), layout="constrained")
+    ax = fig.subplots()
     for key, rows in groups:
         x = rows[x_path].to_numpy() if numeric_x else rows[x_path].map(categories.index).to_numpy()
         y = pd.to_numeric(rows[column], errors="coerce").to_numpy(dtype=float) * factor
         order = np.argsort(x, kind="stable")
         values = key if isinstance(key, tuple) else (key,)
         pairs = zip(others, values, strict=True)
-        legend = ", ".join(f"{_name(path)} {texts[path].get(v, v)}" for path, v in pairs)
-        ax.plot(x[order], y[order], marker="o", label=legend or None)
-        lines += 1
+        line = ", ".join(f"{_name(path)} {texts[path].get(v, v)}" for path, v in pairs)
+        ax.plot(x[order], y[order], marker="o", label=line or None)
     if numeric_x:
         values = table[x_path].to_numpy(dtype=float)
         if np.all(values > 0) and values.max() > LOG_AXIS_RATIO * values.min():
@@ -77,8 +77,8 @@ def plot_sweep(
             ax.set_xticks(categories, [texts[x_path].get(c, str(c)) for c in categories])
     else:
         ax.set_xticks(range(len(categories)), [texts[x_path].get(c, str(c)) for c in categories])
-    if others and lines <= MAX_LEGEND:
-        ax.legend(loc="best", fontsize="small")
+    if legend:
+        legend_beside(ax)
     ax.set_xlabel(f"{_name(x_path)}  ({x_path})")
     ax.set_ylabel(label)
     ax.grid(alpha=0.3)
