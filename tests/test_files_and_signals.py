@@ -269,3 +269,42 @@ def test_an_interrupt_lost_in_a_native_callback_is_delivered_again(capsys):
     finally:
         sys.unraisablehook = previous_hook
         signal.signal(signal.SIGINT, previous_handler)
+
+
+# An interrupt that no command catches (here: one raised as `run` begins), which typer turns
+# into exit 130 without a word. The process ends by os._exit then, hence a child process.
+UNCAUGHT_INTERRUPT = """
+import sys
+import jointwear.cli.run_commands as run_commands
+from jointwear.command import main
+
+def interrupted(*args, **kwargs):
+    raise KeyboardInterrupt
+
+run_commands._run = interrupted
+main(sys.argv[1:])
+"""
+
+
+def test_an_interrupt_no_command_caught_is_said_in_one_line(tmp_path):
+    child = subprocess.run(
+        [sys.executable, "-c", UNCAUGHT_INTERRUPT, "run", str(PENDULUM), "--out", str(tmp_path)],
+        cwd=ROOT, capture_output=True, text=True, timeout=120,
+    )  # fmt: skip
+    assert child.returncode == command.INTERRUPTED
+    assert child.stderr == "interrupted\n"
+
+
+def test_a_command_that_said_why_it_stopped_is_not_repeated(tmp_path, monkeypatch, capsys):
+    # `run` interrupted in its set-up says so itself, and exits 130 with the context suppressed
+    def interrupted(*args, **kwargs):
+        raise KeyboardInterrupt
+
+    import jointwear.run  # noqa: F401  (the module, which the package's run function hides)
+
+    monkeypatch.setattr(sys.modules["jointwear.run"], "load_model", interrupted)
+    monkeypatch.setattr("os._exit", lambda code: (_ for _ in ()).throw(SystemExit(code)))
+    with pytest.raises(SystemExit) as stop:
+        command.main(["run", str(PENDULUM), "--out", str(tmp_path / "out")])
+    assert stop.value.code == command.INTERRUPTED
+    assert capsys.readouterr().err == "interrupted before the run started; nothing was written\n"

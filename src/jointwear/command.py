@@ -33,6 +33,8 @@ def main(argv: list[str] | None = None) -> None:
         code = _run(argv)
     except SystemExit as exit_request:  # typer ends every command this way
         code = exit_request.code
+        if code == INTERRUPTED and _shown_chain_has_interrupt(exit_request):
+            _say("interrupted")  # typer turns one that no command caught into exit 130, mute
     except KeyboardInterrupt:
         _say("interrupted")
         code = INTERRUPTED
@@ -80,6 +82,22 @@ def _caused_by_interrupt(error: BaseException) -> bool:
             return True
         seen.add(id(cause))
         cause = cause.__cause__ or cause.__context__
+    return False
+
+
+def _shown_chain_has_interrupt(error: BaseException) -> bool:
+    """Whether a KeyboardInterrupt is in the chain Python would show under ``error``.
+
+    That is the explicit causes, and the contexts not suppressed (``raise ... from None``,
+    as the commands do when they have said why they stop).
+    """
+    seen: set[int] = set()
+    link: BaseException | None = error
+    while link is not None and id(link) not in seen:
+        if isinstance(link, KeyboardInterrupt):
+            return True
+        seen.add(id(link))
+        link = link.__cause__ or (None if link.__suppress_context__ else link.__context__)
     return False
 
 
