@@ -63,7 +63,9 @@ def drawing_helper(wanted: bool = True) -> Iterator[None]:
         yield
     finally:
         _helper = None
-        helper.shutdown(wait=False, cancel_futures=True)
+        # Waits for the helpers to leave (drawings under way end first): an executor still
+        # closing as the interpreter exits can make its exit hook write to a closed pipe.
+        helper.shutdown(wait=True, cancel_futures=True)
 
 
 @contextmanager
