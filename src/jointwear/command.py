@@ -33,7 +33,7 @@ def main(argv: list[str] | None = None) -> None:
         code = _run(argv)
     except SystemExit as exit_request:  # typer ends every command this way
         code = exit_request.code
-        if code == INTERRUPTED and _shown_chain_has_interrupt(exit_request):
+        if code == INTERRUPTED and _caused_by_interrupt(exit_request, shown_only=True):
             _say("interrupted")  # typer turns one that no command caught into exit 130, mute
     except KeyboardInterrupt:
         _say("interrupted")
@@ -73,23 +73,11 @@ def _run(argv: list[str] | None) -> int:
     return 0
 
 
-def _caused_by_interrupt(error: BaseException) -> bool:
-    """Whether a KeyboardInterrupt is among the causes or contexts of ``error``."""
-    seen: set[int] = set()
-    cause: BaseException | None = error
-    while cause is not None and id(cause) not in seen:
-        if isinstance(cause, KeyboardInterrupt):
-            return True
-        seen.add(id(cause))
-        cause = cause.__cause__ or cause.__context__
-    return False
+def _caused_by_interrupt(error: BaseException, shown_only: bool = False) -> bool:
+    """Whether a KeyboardInterrupt is among the causes or contexts of ``error``.
 
-
-def _shown_chain_has_interrupt(error: BaseException) -> bool:
-    """Whether a KeyboardInterrupt is in the chain Python would show under ``error``.
-
-    That is the explicit causes, and the contexts not suppressed (``raise ... from None``,
-    as the commands do when they have said why they stop).
+    ``shown_only``: only those Python would show, leaving out a context suppressed by
+    ``raise ... from None`` (as the commands do when they have said why they stop).
     """
     seen: set[int] = set()
     link: BaseException | None = error
@@ -97,7 +85,8 @@ def _shown_chain_has_interrupt(error: BaseException) -> bool:
         if isinstance(link, KeyboardInterrupt):
             return True
         seen.add(id(link))
-        link = link.__cause__ or (None if link.__suppress_context__ else link.__context__)
+        hidden = shown_only and link.__suppress_context__
+        link = link.__cause__ or (None if hidden else link.__context__)
     return False
 
 
