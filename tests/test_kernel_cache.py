@@ -1,7 +1,12 @@
 """The compiled cache's stamp covers every kernel source, so an edit anywhere recompiles all."""
 
+import os
 import shutil
+import subprocess
+import sys
+import textwrap
 
+import pytest
 from numba.core import caching
 
 from jointwear.kernels import cache
@@ -37,3 +42,62 @@ def test_functions_outside_the_kernels_keep_numba_locators(tmp_path):
     outside.write_text("def f():\n    return 1\n")
     for locator in cache.LOCATORS:
         assert locator.from_function(lambda: 1, str(outside)) is None
+
+
+def _python(script: str, env: dict | None = None) -> str:
+    done = subprocess.run(
+        [sys.executable, "-c", textwrap.dedent(script)],
+        capture_output=True,
+        text=True,
+        env=env,
+        timeout=600,
+    )
+    assert done.returncode == 0, done.stderr
+    return done.stdout
+
+
+def test_a_kernel_loads_from_the_cache_without_numbas_compile_time_modules():
+    # The first process fills the cache if needed; the second loads the kernel from it.
+    script = """
+        import sys
+        from jointwear.kernels.laws.normal import effective_modulus
+        print(effective_modulus(200e9, 0.3, 100e9, 0.25))
+        print("numba.np.arraymath" in sys.modules)
+    """
+    _python(script)
+    value, compile_modules = _python(script).split()
+    # 1/E* = (1 - 0.3^2)/200 GPa + (1 - 0.25^2)/100 GPa, computed here by hand
+    assert float(value) == pytest.approx(1.0 / (0.91 / 200e9 + 0.9375 / 100e9), rel=1e-15)
+    assert compile_modules == "False"
+
+
+def test_compiling_after_a_kernel_loaded_from_the_cache_still_works():
+    # numba's compiler loads what compiling needs itself: a new function using NumPy compiles.
+    out = _python("""
+        import numpy as np
+        from numba import njit
+        from jointwear.kernels.laws.normal import effective_radius
+        print(effective_radius(0.01, 0.0098))
+        print(njit(lambda a: np.sum(np.sort(a)[1:]))(np.array([3.0, 1.0, 2.0])))
+    """)
+    radius, total = map(float, out.split())
+    assert radius == pytest.approx(0.01 * 0.0098 / 0.0002, rel=1e-12)
+    assert total == 5.0
+
+
+def test_functions_outside_the_kernels_load_from_their_cache_as_numba_loads_them(tmp_path):
+    (tmp_path / "outside.py").write_text(
+        "from numba import njit\n\n@njit(cache=True)\ndef twice(x):\n    return 2.0 * x\n"
+    )
+    env = {**os.environ, "PYTHONPATH": str(tmp_path), "NUMBA_CACHE_DIR": str(tmp_path / "c")}
+    script = """
+        import sys
+        import jointwear.kernels
+        from outside import twice
+        print(twice(1.5), twice.stats.cache_hits.get(twice.signatures[0], 0))
+        print("numba.np.arraymath" in sys.modules)
+    """
+    _python(script, env)
+    value, hits, compile_modules = _python(script, env).split()
+    assert (float(value), int(hits)) == (3.0, 1)
+    assert compile_modules == "True"  # numba's own load refreshed its context
