@@ -1,7 +1,8 @@
 """Compiled kernels: plain SI numbers and arrays, no names, units or I/O.
 
 Everything here is ``@njit(cache=True)`` and imports only ``math``, ``numpy``, ``numba``
-and sibling kernel modules (``cache`` also ``hashlib`` and ``os``, to stamp the cache).
+and sibling kernel modules (``cache`` also ``hashlib``, ``os`` and ``typing``, to stamp the
+cache).
 
 - ``laws/``: normal-force, friction and wear laws, each family with its registry table;
 - ``elements/``: contact elements (``journal``: the revolute clearance joint);
