@@ -97,21 +97,20 @@ def render_pngs(drawings: Sequence[Callable[[], Figure]], dpi: int = DPI) -> lis
 def start_pngs(
     drawings: Sequence[Callable[[], Figure]], dpi: int = DPI
 ) -> Callable[[], list[bytes]]:
-    """Hand the drawings to the helper processes now; the call returned waits for the PNGs.
+    """Hand the drawings to the helper processes; the call returned waits for the PNGs.
 
-    The call returns each figure as PNG bytes, in the order given. Each drawing reaches a
-    helper pickled; an exception it raises there is raised by the call as it was. Without
-    helpers, or if they are gone (killed), the call draws the figures itself.
+    A thread hands them over, so the caller goes on at once even while the helpers' fork
+    server is still importing (the helpers are forked at the first drawing). The call returns
+    each figure as PNG bytes, in the order given. Each drawing reaches a helper pickled; an
+    exception it raises there is raised by the call as it was. Without helpers, or if they are
+    gone (killed), the call draws the figures itself.
     """
     sent: dict[int, Future[bytes]] = {}
-    if _helper is not None:
-        try:
-            for i, draw in enumerate(drawings):
-                sent[i] = _helper.submit(_png, draw, dpi)
-        except BrokenProcessPool:  # the helper is gone (killed): drawn here instead
-            sent.clear()
+    handover = threading.Thread(target=_hand_over, args=(_helper, drawings, dpi, sent), daemon=True)
+    handover.start()
 
     def wait() -> list[bytes]:
+        handover.join()
         images = {i: _png(draw, dpi) for i, draw in enumerate(drawings) if i not in sent}
         for i, future in sent.items():
             try:
@@ -121,6 +120,22 @@ def start_pngs(
         return [images[i] for i in range(len(drawings))]
 
     return wait
+
+
+def _hand_over(
+    helper: ProcessPoolExecutor | None,
+    drawings: Sequence[Callable[[], Figure]],
+    dpi: int,
+    sent: dict[int, Future[bytes]],
+) -> None:
+    """Submit each drawing to ``helper`` into ``sent`` by index; stop at a broken or shut pool."""
+    if helper is None:
+        return
+    try:
+        for i, draw in enumerate(drawings):
+            sent[i] = helper.submit(_png, draw, dpi)
+    except (BrokenProcessPool, RuntimeError):  # gone (killed) or shut: the rest drawn here
+        pass
 
 
 def _png(draw: Callable[[], Figure], dpi: int) -> bytes:
