@@ -106,6 +106,22 @@ def test_users_files_in_the_results_folder_are_kept(tmp_path):
     assert "notes.csv" not in json.loads((out / "ideal" / RECORD).read_text())
 
 
+def test_results_are_readable_by_others_whatever_the_umask(tmp_path):
+    import stat
+
+    old = os.umask(0o077)  # a private umask: files made here would be 600 otherwise
+    try:
+        done = invoke("run", PENDULUM, "--out", tmp_path / "out", "--t-end", "0.01")
+    finally:
+        os.umask(old)
+    assert done.exit_code == 0, done.output
+    written = [p for p in (tmp_path / "out").rglob("*") if p.is_file()]
+    assert {"summary.json", "timeseries.csv", "energy.png"} <= {p.name for p in written}
+    assert {p.name: oct(stat.S_IMODE(p.stat().st_mode)) for p in written} == {
+        p.name: "0o644" for p in written
+    }
+
+
 def test_a_sweep_keeps_the_users_figures(tmp_path):
     out = tmp_path / "sweep"
     (out / "figures").mkdir(parents=True)
