@@ -16,7 +16,9 @@ Two targets, measured with the numba cache warm:
   at a thousand times the paper's wear coefficient's inverse (8e-17 1/Pa) with its default
   uncertainty band, as a process; beside it the direct run of every turn at the paper's
   coefficient (8e-14 1/Pa), its turns scaled by the thousand (the dynamics depend on the
-  profiles, not on k): whether the band holds it, and the wall times.
+  profiles, not on k): whether the band holds it, and the wall times. ``--direct-set`` adds
+  direct runs with one setting changed each (another integrator, a tighter tolerance): the
+  direct simulation's own scatter, which the band is held against too.
 - **convergence** (on request): life runs over 1e6 turns at several ``--max-change``, at the
   paper's wear coefficient and a thousand times smaller, and the direct run (``--direct``):
   the turns at which the clearance has grown by 25, 50 and 75 %.
@@ -28,6 +30,8 @@ Usage (from the repository root, after ``make install``)::
     .venv/bin/python benchmarks/bench_studies.py --no-sweep --no-life \
         --convergence 8%,4%,2%,1%,0.5% --direct                              # 6 minutes
     .venv/bin/python benchmarks/bench_studies.py --no-sweep --no-life --band  # 3 minutes
+    .venv/bin/python benchmarks/bench_studies.py --no-sweep --no-life --band --direct \
+        --direct-set solver.integrator=dopri5 --direct-set solver.rtol=5e-7   # 10 minutes
 """
 
 from __future__ import annotations
@@ -41,6 +45,7 @@ import subprocess
 import sys
 import tempfile
 import time
+from collections.abc import Sequence
 from pathlib import Path
 
 import numpy as np
@@ -132,11 +137,11 @@ def life_run(cycles: int) -> dict:
     }
 
 
-def band_run(direct: dict | None = None) -> dict:
-    """The million-turn example with its band (a process), against the scaled direct run.
+def band_run(directs: list[dict] | None = None) -> dict:
+    """The million-turn example with its band (a process), against the scaled direct runs.
 
-    ``direct``: a row of ``convergence`` for the direct run at the paper's coefficient; run
-    here if not given.
+    ``directs``: rows of ``convergence`` for direct runs at the paper's coefficient, the
+    default settings' first; that one is run here if none is given.
     """
     scale = 1000  # 8e-14 / 8e-17
     with tempfile.TemporaryDirectory() as scratch:
@@ -151,12 +156,19 @@ def band_run(direct: dict | None = None) -> dict:
             raise RuntimeError(process.stderr.decode() or process.stdout.decode())
         summary = json.loads((out / "summary.json").read_text())
         band_rows = len(pd.read_csv(out / "life_band.csv"))
-    if direct is None:
-        direct = convergence([], True)[-1]
+    directs = directs or convergence([], True)
     joint = summary["clearance_joints"]["coupler_follower"]["band"]
-    half = joint["cycles_to_clearance_growth_50pct"]
-    reference = direct["growth_at"][50] * scale
-    held = half["low"] <= reference <= (half["high"] if half["high"] is not None else math.inf)
+    half, growth = joint["cycles_to_clearance_growth_50pct"], joint["clearance_growth_m"]
+    held = [
+        {
+            "direct": direct["max_change"],
+            "50pct_scaled": direct["growth_at"][50] * scale,
+            "growth_at_turn_1000_m": direct["growth_at_turn"],
+            "holds_50pct": _within(direct["growth_at"][50] * scale, half),
+            "holds_growth": _within(direct["growth_at_turn"], growth),
+        }
+        for direct in directs
+    ]
     report = {
         "command": "jointwear "
         + " ".join([*args[:1], "examples/flores2009_fourbar.toml", *args[2:4], "--set", f"'{k}'"]),
@@ -165,47 +177,59 @@ def band_run(direct: dict | None = None) -> dict:
         "single_run_wall_s": summary["wall_s"],
         "band_table_rows": band_rows,
         "cycles_to_clearance_growth_50pct": half,
-        "clearance_growth_m": joint["clearance_growth_m"],
+        "clearance_growth_m": growth,
         "max_wear_depth_journal_m": joint["max_wear_depth_journal_m"],
-        "direct_paper_k": direct,
-        "direct_50pct_scaled": reference,
-        "band_holds_direct": held,
+        "directs_paper_k": directs,
+        "held": held,
     }
     runs = ", ".join(
         f"{r['max_change']} {r['wall_s']:.1f} s ({r['status']})" for r in summary["band"]["runs"]
     )
-    growth = joint["clearance_growth_m"]
     print(
         f"band, 1,000,000 turns at k 8e-17 1/Pa: 50% growth at {half['value']:,.0f} turns, band "
         f"{half['low']:,.0f} to {half['high']:,.0f}; growth at 10^6 turns "
         f"{growth['value'] * 1e6:.1f} um ({growth['low'] * 1e6:.1f} to "
-        f"{growth['high'] * 1e6:.1f}); direct run at 8e-14, scaled: 50% at "
-        f"{reference:,.0f} turns, growth {direct['growth_at_turn'] * 1e6:.1f} um at "
-        f"turn 1000: {'inside' if held else 'OUTSIDE'} the band; runs: {runs}; "
-        f"process {wall:.1f} s wall",
+        f"{growth['high'] * 1e6:.1f}); runs: {runs}; process {wall:.1f} s wall",
         flush=True,
     )
+    for row in held:
+        print(
+            f"  {row['direct']}, at 8e-14 scaled: 50% at {row['50pct_scaled']:,.0f} turns "
+            f"({'inside' if row['holds_50pct'] else 'OUTSIDE'} the band), growth "
+            f"{row['growth_at_turn_1000_m'] * 1e6:.1f} um at turn 1000 "
+            f"({'inside' if row['holds_growth'] else 'OUTSIDE'})",
+            flush=True,
+        )
     return report
 
 
-def convergence(changes: list[str], direct: bool) -> list[dict]:
+def _within(x: float | None, band: dict) -> bool:
+    """Whether ``x`` lies in ``band`` ({low, high}; a high of None: no upper end)."""
+    high = math.inf if band["high"] is None else band["high"]
+    return x is not None and band["low"] <= x <= high
+
+
+def convergence(changes: list[str], direct: bool, variants: Sequence[str] = ()) -> list[dict]:
     """Life runs of the four-bar over 1e6 turns per ``--max-change`` (and, if ``direct``, with
-    no extrapolation), at the paper's wear coefficient and at one a thousand times smaller:
-    when the clearance has grown by 25, 50 and 75 % of c, and where each run ended."""
+    no extrapolation, also once per override of ``variants``), at the paper's wear coefficient
+    and at one a thousand times smaller: when the clearance has grown by 25, 50 and 75 % of c,
+    and where each run ended."""
     from jointwear.studies.life.records import cycles_at
     from jointwear.studies.life.study import life
 
     rows = []
-    settings = [(k, change, True) for k in WEAR_COEFFICIENTS for change in changes]
-    settings += [(WEAR_COEFFICIENTS[0], "direct", False)] if direct else []
+    settings = [(k, change, True, []) for k in WEAR_COEFFICIENTS for change in changes]
+    if direct:
+        settings += [(WEAR_COEFFICIENTS[0], "direct", False, [])]
+        settings += [(WEAR_COEFFICIENTS[0], f"direct {v}", False, [v]) for v in variants]
     with tempfile.TemporaryDirectory() as scratch:
-        for k, change, extrapolate in settings:
+        for k, change, extrapolate, extra in settings:
             folder = Path(scratch) / f"{len(rows)}"
             start = time.perf_counter()
             res = life(
                 FOURBAR, folder, cycles=1_000_000, figures=False, extrapolate=extrapolate,
                 max_change=change if extrapolate else "1%",
-                overrides=[f"{CLEARANCE}.wear_coefficient={k}"],
+                overrides=[f"{CLEARANCE}.wear_coefficient={k}", *extra],
             )  # fmt: skip
             growth = res.table["coupler_follower.clearance_growth_m"] / 200e-6
             joint = res.summary["clearance_joints"]["coupler_follower"]
@@ -267,6 +291,13 @@ def main(argv: list[str] | None = None) -> dict:
     )
     parser.add_argument("--direct", action="store_true", help="with it, the direct run (3 min)")
     parser.add_argument(
+        "--direct-set",
+        action="append",
+        default=[],
+        metavar="OVERRIDE",
+        help="with --direct, one more direct run with this setting (repeatable)",
+    )
+    parser.add_argument(
         "--band", action="store_true", help="the million-turn example's band against the direct run"
     )
     parser.add_argument("--out", type=Path, default=ROOT / "benchmarks" / "studies.json")
@@ -291,10 +322,10 @@ def main(argv: list[str] | None = None) -> dict:
         )
     if args.convergence or args.direct:
         changes = [c for c in args.convergence.split(",") if c]
-        report["convergence"] = convergence(changes, args.direct)
+        report["convergence"] = convergence(changes, args.direct, args.direct_set)
     if args.band:
-        rows = [r for r in report.get("convergence", []) if r["max_change"] == "direct"]
-        report["band"] = band_run(rows[0] if rows else None)
+        rows = [r for r in report.get("convergence", []) if r["max_change"].startswith("direct")]
+        report["band"] = band_run(rows)
     args.out.write_text(json.dumps(report, indent=2))
     return report
 

@@ -16,8 +16,12 @@ This is the error estimate of step doubling: for a first-order method (the extra
 error grows with the bound), the run at twice the bound is off by about twice the finer
 run's error, so their difference estimates that error; where chaos rather than the bound
 dominates, the companions are further samples of the scatter, on either side of the value,
-hence the symmetric band. On the paper's four-bar (``benchmarks/bench_studies.py --band``)
-it holds the direct simulation of every cycle, which ``[min, max]`` of the runs does not.
+hence the symmetric band. On the paper's four-bar over a million turns
+(``benchmarks/bench_studies.py --band --direct``) it holds the 50 %-growth turn of the direct
+simulation of every turn, which ``[min, max]`` of the runs does not, and that of direct
+simulations with another integrator or a tighter tolerance. Late in that life the joint
+settles into one of two wear regimes, and which one differs even between those direct
+simulations: there the band holds the growth of some of them only (README, "Long-life wear").
 
 ``life.csv`` keeps the value's run; ``life_band.csv`` tabulates the band against cycles
 (``band_table``), and ``summary.json`` gives it per joint (``band_summary``).
