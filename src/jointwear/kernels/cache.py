@@ -10,7 +10,8 @@ project replace (``NUMBA_CACHE_LOCATOR_CLASSES``); the numba range in ``pyprojec
 is the one this was written and tested against.
 
 Loading a kernel from this cache also skips numba's refresh of its whole target context
-(``load_kernel``), which cost every process that runs a kernel half a second.
+(``load_kernel``): up to half a second of every process that runs a kernel (0.55 s for the
+four-bar; less where a kernel's environment imports some of numba's modules back).
 """
 
 import hashlib
