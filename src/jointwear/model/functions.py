@@ -46,29 +46,56 @@ class Harmonic(Table, Generic[_T]):
     phase: Angle = 0.0
 
 
+# One named class per quantity, defined here at module level: pickle finds a class by its
+# module and name, and pydantic names every parametrisation of a generic alike by the types'
+# reprs (Harmonic[Force] and Harmonic[Torque] are both "Harmonic[Annotated[float, ...]]").
+class ForceHarmonic(Harmonic[Force]):
+    """A harmonic force [N]."""
+
+
+class TorqueHarmonic(Harmonic[Torque]):
+    """A harmonic torque [N m]."""
+
+
+class AngleHarmonic(Harmonic[Angle]):
+    """A harmonic angle [rad]."""
+
+
+class DistanceHarmonic(Harmonic[Length]):
+    """A harmonic distance [m]."""
+
+
+class AngleAtConstantSpeed(ConstantSpeed[AngularSpeed, Angle]):
+    """An angle [rad] turning at a constant speed [rad/s]."""
+
+
+class DistanceAtConstantSpeed(ConstantSpeed[Speed, Length]):
+    """A distance [m] travelled at a constant speed [m/s]."""
+
+
 def _tag(value: object) -> object:
     if isinstance(value, dict):
         return value.get("type")
     return value.type if isinstance(value, BaseModel) else SCALAR_TAG
 
 
-def _quantity_or_function(quantity: object) -> object:
-    """Build the type: a constant `quantity`, or a polynomial or harmonic table of it."""
+def _quantity_or_function(quantity: object, harmonic: type[Harmonic]) -> object:
+    """Build the type: a constant `quantity`, or a polynomial or ``harmonic`` table of it."""
     return Annotated[
         Annotated[quantity, Tag(SCALAR_TAG)]
         | Annotated[Polynomial, Tag("polynomial")]
-        | Annotated[Harmonic[quantity], Tag("harmonic")],
+        | Annotated[harmonic, Tag("harmonic")],
         Discriminator(_tag),
     ]
 
 
-ForceValue = _quantity_or_function(Force)
-TorqueValue = _quantity_or_function(Torque)
+ForceValue = _quantity_or_function(Force, ForceHarmonic)
+TorqueValue = _quantity_or_function(Torque, TorqueHarmonic)
 AngleFunction = Annotated[
-    ConstantSpeed[AngularSpeed, Angle] | Polynomial | Harmonic[Angle], Field(discriminator="type")
+    AngleAtConstantSpeed | Polynomial | AngleHarmonic, Field(discriminator="type")
 ]
 DistanceFunction = Annotated[
-    ConstantSpeed[Speed, Length] | Polynomial | Harmonic[Length], Field(discriminator="type")
+    DistanceAtConstantSpeed | Polynomial | DistanceHarmonic, Field(discriminator="type")
 ]
 
 
