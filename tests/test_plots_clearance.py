@@ -174,57 +174,6 @@ def test_figures_drawn_by_the_helper_process_are_those_drawn_here(fourbar, ideal
         assert mine.read_bytes() == theirs.read_bytes(), mine.name
 
 
-def test_the_helpers_are_gone_when_their_block_ends(fourbar, tmp_path):
-    # An executor still closing as the interpreter exits can make its exit hook write to a
-    # closed pipe (a traceback after a successful run, about one run in ten): none is left.
-    import threading
-
-    from jointwear.figures.plan import Drawing
-    from jointwear.figures.render import drawing_helper, render_pngs
-
-    with drawing_helper():
-        (png,) = render_pngs([Drawing("run", "plot_energy", (fourbar,))])
-    assert png.startswith(b"\x89PNG")
-    managers = [t for t in threading.enumerate() if "ExecutorManager" in type(t).__name__]
-    assert managers == []
-
-
-class _SlowHelper:
-    """A helper pool whose processes come up only once the caller is back from handing over
-    (as a fork server still importing); it gives up after ``PATIENCE`` s. It draws here."""
-
-    PATIENCE = 20.0  # [s]
-
-    def __init__(self) -> None:
-        import threading
-
-        self.caller_back = threading.Event()
-        self.came_up_after_the_caller_was_back = []
-
-    def submit(self, fn, *args):
-        from concurrent.futures import Future
-
-        back = self.caller_back.wait(self.PATIENCE)
-        self.came_up_after_the_caller_was_back.append(back)
-        future = Future()
-        future.set_result(fn(*args))
-        return future
-
-
-def test_handing_figures_over_does_not_wait_for_the_helpers_to_start(fourbar, monkeypatch):
-    from jointwear.figures import render
-    from jointwear.figures.plan import Drawing
-
-    slow = _SlowHelper()
-    monkeypatch.setattr(render, "_helper", slow)
-    drawing = Drawing("run", "plot_energy", (fourbar,))
-    wait = render.start_pngs([drawing])
-    slow.caller_back.set()
-    (png,) = wait()
-    assert slow.came_up_after_the_caller_was_back == [True]
-    assert png == render._png(drawing, render.DPI)
-
-
 def test_only_the_papers_model_is_titled_after_the_papers_figures(fourbar, ideal):
     from jointwear.figures.clearance import plot_orbit
 

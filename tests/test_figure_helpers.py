@@ -1,0 +1,161 @@
+"""The figure helpers: whatever a drawing or a helper does, the figures come and nothing hangs.
+
+The drawings here are small classes of this module: a helper process unpickles them by name
+(the fork server has the test's ``sys.path``). Each misbehaves only in a helper, so what the
+caller then draws itself is an ordinary figure.
+"""
+
+import os
+import signal
+import subprocess
+import sys
+import threading
+import time
+
+import pytest
+from matplotlib.figure import Figure
+
+from jointwear.figures import render
+
+
+class _Blank:
+    """A blank figure, drawn wherever it is called; it knows the process that made it."""
+
+    def __init__(self) -> None:
+        self.caller = os.getpid()
+
+    def __call__(self) -> Figure:
+        return Figure(figsize=(2, 2))
+
+
+class _StuckInHelpers(_Blank):
+    def __call__(self) -> Figure:
+        if os.getpid() != self.caller:
+            time.sleep(600)
+        return super().__call__()
+
+
+class _DiesInHelpers(_Blank):
+    def __call__(self) -> Figure:
+        if os.getpid() != self.caller:
+            os.kill(os.getpid(), signal.SIGKILL)
+        return super().__call__()
+
+
+class _RaisesInHelpers(_Blank):
+    def __call__(self) -> Figure:
+        if os.getpid() != self.caller:
+            raise LookupError("no such column")
+        return super().__call__()
+
+
+def _helper_processes() -> list:
+    return [h.process for h in render._helpers if h.process is not None]
+
+
+def test_helpers_draw_what_the_caller_draws_and_are_gone_after_the_block():
+    expected = render._png(_Blank(), render.DPI)
+    with render.drawing_helper():
+        pngs = render.render_pngs([_Blank(), _Blank(), _Blank()])
+        processes = _helper_processes()
+    assert pngs == [expected] * 3
+    assert processes  # the helpers drew them
+    assert not any(p.is_alive() for p in processes)
+    assert not [t for t in threading.enumerate() if t.name == render.HANDOVER]
+
+
+def test_a_drawing_that_does_not_pickle_is_drawn_here():
+    def local() -> Figure:  # a local function does not pickle
+        return Figure(figsize=(2, 2))
+
+    with render.drawing_helper():
+        (png,) = render.render_pngs([local])
+    assert png == render._png(_Blank(), render.DPI)
+
+
+def test_a_helper_killed_while_drawing_leaves_its_figure_to_the_caller():
+    with render.drawing_helper():
+        pngs = render.render_pngs([_DiesInHelpers(), _Blank(), _DiesInHelpers(), _Blank()])
+    assert pngs == [render._png(_Blank(), render.DPI)] * 4
+
+
+def test_an_error_in_a_helper_is_raised_by_the_caller_as_it_was():
+    with render.drawing_helper(), pytest.raises(LookupError, match="no such column"):
+        render.render_pngs([_RaisesInHelpers()])
+
+
+def test_a_helper_that_does_not_answer_is_given_up_killed_and_said(monkeypatch, capsys):
+    monkeypatch.setattr(render, "PATIENCE", 1.0)
+    started = time.monotonic()
+    with render.drawing_helper():
+        pngs = render.render_pngs([_StuckInHelpers(), _StuckInHelpers(), _Blank()])
+        processes = _helper_processes()
+    assert time.monotonic() - started < 60.0  # the helpers start (~10 s cold), then 1 s each
+    assert pngs == [render._png(_Blank(), render.DPI)] * 3
+    assert not any(p.is_alive() for p in processes)
+    assert "did not answer within 1 s" in capsys.readouterr().err
+
+
+def test_handing_over_returns_before_the_helpers_have_started(monkeypatch):
+    release = threading.Event()
+    started = render._Helper._started
+
+    def slow_start(helper):
+        release.wait(20.0)  # as a fork server still importing
+        return started(helper)
+
+    monkeypatch.setattr(render._Helper, "_started", slow_start)
+    with render.drawing_helper():
+        began = time.monotonic()
+        wait = render.start_pngs([_Blank()])
+        handed_over_in = time.monotonic() - began
+        release.set()
+        (png,) = wait()
+    assert handed_over_in < 1.0
+    assert png == render._png(_Blank(), render.DPI)
+
+
+STUCK_COMMAND = """
+import sys, time
+sys.path.insert(0, sys.argv[1])
+from test_figure_helpers import _StuckInHelpers
+from jointwear.figures import render
+
+if __name__ == "__main__":
+    with render.drawing_helper():
+        wait = render.start_pngs([_StuckInHelpers(), _StuckInHelpers()])
+        while len([h for h in render._helpers if h.process and h.process.pid]) < 2:
+            time.sleep(0.05)
+        print(*(h.process.pid for h in render._helpers), flush=True)
+        wait()
+"""
+
+
+@pytest.mark.parametrize("stop", [signal.SIGKILL, signal.SIGTERM])
+def test_the_helpers_never_outlive_the_command_whatever_ends_it(tmp_path, stop):
+    script = tmp_path / "stuck.py"
+    script.write_text(STUCK_COMMAND)
+    here = os.path.dirname(__file__)
+    command = subprocess.Popen([sys.executable, str(script), here], stdout=subprocess.PIPE,
+                               text=True)  # fmt: skip
+    try:
+        pids = [int(pid) for pid in command.stdout.readline().split()]
+        assert len(pids) == 2
+        command.send_signal(stop)
+        command.wait(30)
+        deadline = time.monotonic() + 10.0
+        while any(_alive(pid) for pid in pids) and time.monotonic() < deadline:
+            time.sleep(0.05)
+        assert not [pid for pid in pids if _alive(pid)]
+    finally:
+        command.kill()
+        command.wait()
+
+
+def _alive(pid: int) -> bool:
+    """Whether process ``pid`` runs (a zombie, ended and not yet reaped, does not)."""
+    try:
+        with open(f"/proc/{pid}/stat") as stat:
+            return stat.read().rpartition(")")[2].split()[0] != "Z"
+    except FileNotFoundError:
+        return False
