@@ -54,7 +54,7 @@ def one_line_failure(result, code: int = 2) -> str:
     lines = [
         line
         for line in result.stderr.splitlines()
-        if not line.startswith("compiling the kernels")  # a cold kernel cache adds it
+        if not line.startswith("compiling the kernels")  # a kernel cache miss adds it
     ]
     assert len(lines) == 1, result.stderr
     return lines[0]
