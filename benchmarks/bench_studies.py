@@ -12,7 +12,7 @@ Two targets, measured with the numba cache warm:
 - **life**: the ``jointwear life`` process wearing the paper's four-bar over 1e6 crank cycles
   with the default settings (target: under 60 s); wall time, updates, simulated cycles and
   the reported status.
-- **band** (on request, ``--band``): the README's million-turn example, ``jointwear life``
+- **band** (on request, ``--band``): the million-turn example of docs/studies.md, ``jointwear life``
   at a thousand times the paper's wear coefficient's inverse (8e-17 1/Pa) with its default
   uncertainty band, as a process; beside it the direct run of every turn at the paper's
   coefficient (8e-14 1/Pa), its turns scaled by the thousand (the dynamics depend on the

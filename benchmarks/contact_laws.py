@@ -1,6 +1,6 @@
 """The paper's four-bar with each contact law, and the laws' force against penetration.
 
-Writes the README's comparison table (max contact force, time in contact, deepest wear, the
+Writes the user guide's comparison table (max contact force, time in contact, deepest wear, the
 share of the time beyond the law's range) for the cases below, each the paper's four-bar
 (``examples/flores2009_fourbar.toml``, or an example extending it) with its clearance joint
 changed, and the figure ``docs/images/contact_laws.png``: force against penetration of every
@@ -58,7 +58,7 @@ def table(t_end: float) -> str:
 
 
 def row(name: str, t_end: float) -> str:
-    """The table's row of case ``name`` over t_end [s] (also checked against the README)."""
+    """The table's row of case ``name`` over t_end [s] (also checked against docs/user-guide.md)."""
     path, overrides = CASES[name]
     model = jw.load_model(path, [f"solver.t_end={t_end}", *overrides])
     joint = jw.simulate(model).summary["clearance_joints"][JOINT]

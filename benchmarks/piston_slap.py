@@ -1,4 +1,4 @@
-"""Headline figures of the piston-slap example, at two tolerances (the README's table).
+"""Headline figures of the piston-slap example, at two tolerances (the user guide's table).
 
 Runs ``examples/slider_crank_piston_clearance.toml`` (the slider-crank of Flores, Leine and
 Glocker 2010 with a gap between slider and guide) at the file's tolerances and at rtol 1e-8,

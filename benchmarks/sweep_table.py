@@ -1,8 +1,8 @@
-"""The README's sweep table: the paper's four-bar at three clearances and three frictions.
+"""The sweep table of docs/studies.md: the paper's four-bar at three clearances and three frictions.
 
 Each case is the paper's four-bar (``examples/flores2009_fourbar.toml``) over 1 s (25 crank
 turns) with the bearing radius and friction coefficient of its clearance joint changed, as
-the README's ``jointwear sweep`` command runs them; a row gives the whole run's figures.
+the page's ``jointwear sweep`` command runs them; a row gives the whole run's figures.
 
 Usage (from the repository root, after ``make install``)::
 

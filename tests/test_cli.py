@@ -66,8 +66,12 @@ def pendulum_run(tmp_path_factory):
 
 
 def without_compile_notice(stderr: str) -> str:
-    """stderr without the line a cold kernel cache adds (the first run after an install)."""
-    notice = "compiling the kernels: the first run after an install or an upgrade (cached after)\n"
+    """stderr without the line a kernel cache miss adds (say, the first run after an install)."""
+    notice = (
+        "compiling the kernels for this run's integrator and formulation: they are not in "
+        "numba's cache yet (a first run, an upgrade, an edited kernel or a new combination); "
+        "later runs load them from the cache\n"
+    )
     return stderr.replace(notice, "", 1)
 
 

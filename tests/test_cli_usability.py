@@ -54,7 +54,7 @@ def one_line_failure(result, code: int = 2) -> str:
     lines = [
         line
         for line in result.stderr.splitlines()
-        if not line.startswith("compiling the kernels")  # a cold kernel cache adds it
+        if not line.startswith("compiling the kernels")  # a kernel cache miss adds it
     ]
     assert len(lines) == 1, result.stderr
     return lines[0]
@@ -130,6 +130,18 @@ def test_every_help_text_is_shown_whole(path, command):
         ]
         for text in texts:
             assert words(text.partition("\f")[0]) in shown, (path, text)
+
+
+def test_the_help_says_what_the_tool_does_and_lists_every_command():
+    result = invoke("--help", env=WIDE)
+    assert result.exit_code == 0, result.output
+    shown = words(result.stdout)
+    assert "Simulate planar mechanisms whose joints have clearance" in shown
+    assert "how their surfaces wear" in shown
+    assert "Command-line interface" not in shown  # the module's docstring is for developers
+    commands = result.stdout.partition("Commands:")[2].split()
+    for name in ("run", "check", "plot", "sweep", "life", "citations", "export"):
+        assert name in commands, name
 
 
 def test_square_brackets_in_help_texts_are_kept():

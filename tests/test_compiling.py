@@ -2,6 +2,7 @@
 
 from numba import njit
 
+from jointwear.cli.progress import CompileNotice
 from jointwear.compiling import compile_notice
 
 
@@ -33,3 +34,11 @@ def test_no_notice_without_compiling():
     with compile_notice(lambda: starts.append(True), lambda done, total: None):
         f(2.0)
     assert starts == []
+
+
+def test_the_notice_says_what_compiles_and_when_it_recurs(capsys):
+    CompileNotice().started()
+    line = capsys.readouterr().err
+    assert line.startswith("compiling the kernels for this run's integrator and formulation")
+    assert "new combination" in line  # not only after an install: any cache miss compiles
+    assert "later runs load them from the cache" in line

@@ -1,4 +1,4 @@
-"""The promises about files and signals (README, "Files and signals"; ``jointwear.io``).
+"""The promises about files and signals (docs/files-and-signals.md; ``jointwear.io``).
 
 - Nothing outside the results folder is written or removed, and nothing in it that jointwear
   did not write: links are refused, users' files are kept.

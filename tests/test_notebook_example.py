@@ -1,4 +1,4 @@
-"""examples/notebook.py, the notebook of the README's Python section, runs as written."""
+"""examples/notebook.py, the user guide's Python API in notebook cells, runs as written."""
 
 import os
 import subprocess

@@ -1,7 +1,8 @@
-"""Notice of numba compiling the kernels, so that a cold cache does not look like a hang.
+"""Notice of numba compiling the kernels, so that a cache miss does not look like a hang.
 
-On a cold cache (the first run after an install, an upgrade or a kernel edit) numba compiles
-the kernels for seconds before the first step.
+numba compiles a kernel on a cache miss: on the first run after an install, an upgrade or a
+kernel edit, and for a type signature not compiled before (the step loop is specialised to
+the run's integrator and formulation). It then takes seconds before the first step.
 """
 
 from __future__ import annotations

@@ -20,7 +20,14 @@ from .export_commands import export
 from .run_commands import check, plot, run
 from .study_commands import life, sweep
 
-app = typer.Typer(no_args_is_help=True, help=__doc__.splitlines()[0], rich_markup_mode=None)
+HELP = (
+    "Simulate planar mechanisms whose joints have clearance: the contact, friction and "
+    "lubricant forces in the joints, and how their surfaces wear (after Flores 2009).\n\n"
+    "Run a TOML model file, check it, sweep its parameters or predict its wear over millions "
+    "of cycles. 'jointwear COMMAND --help' describes a command."
+)
+
+app = typer.Typer(no_args_is_help=True, help=HELP, rich_markup_mode=None)
 for command in (run, check, plot, sweep, life, citations, export):
     app.command()(command)
 

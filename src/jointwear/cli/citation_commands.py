@@ -22,7 +22,7 @@ def citations(
     """Print the references behind MODEL: the method, its formulation, integrator and laws.
 
     One reference a line, Flores (2009) first, each once; in Python,
-    ``jointwear.citations_for(model)``.
+    jointwear.citations_for(model).
     """
     from ..citations import citations_for
     from ..model import ModelError

@@ -22,7 +22,7 @@ def export(
     """Write the tables of the results FOLDER, with units, to PATH (.nc or .mat).
 
     Needs the export extra (pip install 'jointwear[export]'); in Python,
-    ``jointwear.load_results(FOLDER).export(PATH)``.
+    jointwear.load_results(FOLDER).export(PATH).
     """
     from ..model import ModelError
     from ..results import load_results

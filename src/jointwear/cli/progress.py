@@ -58,6 +58,13 @@ class ProgressBar:
             self.bar = None
 
 
+COMPILING = (
+    "compiling the kernels for this run's integrator and formulation: they are not in numba's "
+    "cache yet (a first run, an upgrade, an edited kernel or a new combination); later runs "
+    "load them from the cache"
+)
+
+
 class CompileNotice:
     """Says once on stderr that numba is compiling the kernels; a bar of functions on a terminal.
 
@@ -71,10 +78,7 @@ class CompileNotice:
     def started(self) -> None:
         """The first compile of the process has begun."""
         self.active = True
-        err.print(
-            "compiling the kernels: the first run after an install or an upgrade (cached after)",
-            soft_wrap=True,
-        )
+        err.print(COMPILING, soft_wrap=True)
 
     def __call__(self, done: int, total: int) -> None:
         """Show ``done`` of about ``total`` functions compiled (until the work reports)."""

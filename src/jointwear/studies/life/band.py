@@ -21,7 +21,8 @@ hence the symmetric band. On the paper's four-bar over a million turns
 simulation of every turn, which ``[min, max]`` of the runs does not, and that of direct
 simulations with another integrator or a tighter tolerance. Late in that life the joint
 settles into one of two wear regimes, and which one differs even between those direct
-simulations: there the band holds the growth of some of them only (README, "Long-life wear").
+simulations: there the band holds the growth of some of them only (docs/benchmarks.md,
+"Long-life wear against the direct simulation").
 
 ``life.csv`` keeps the value's run; ``life_band.csv`` tabulates the band against cycles
 (``band_table``), and ``summary.json`` gives it per joint (``band_summary``).
