@@ -405,6 +405,14 @@ def test_varied_values_in_the_table_are_the_model_si_values():
     assert youngs == pytest.approx(2.07e11)
 
 
+def test_a_key_the_model_turns_into_another_gives_its_si_value_too():
+    # radial_clearance is no field of the model: it sets the bearing radius
+    path = "joints.coupler_follower.clearance.radial_clearance"
+    model = jw.load_model(FOURBAR, [f"{path}=0.1 mm"])
+    assert si_value(model, path, "0.1 mm") == pytest.approx(1e-4, rel=1e-9)
+    assert si_value(model, "joints.2.clearance.radial_clearance", "0.1 mm") == pytest.approx(1e-4)
+
+
 def test_a_sweep_file_and_options_make_one_plan(tmp_path):
     plan_file = tmp_path / "plan.toml"
     plan_file.write_text(
