@@ -59,6 +59,7 @@ from .legends import LEGEND_ROOM
 
 LOG_AXIS_RATIO = 10.0  # positive values spanning more than a decade get a logarithmic axis
 LONG_LENGTH = (1e-3, "m", 1.0)  # lengths in a column reaching this [m] are drawn in metres
+SAME = 1e-9  # values differing by less than this share of the largest are the same
 MAX_VALUE_TICKS = 8  # numeric values up to this many get a tick each, if their labels fit
 COLOUR_BAR_ROOM = 1.2  # [in] figures with a colour bar are this much wider
 MAX_LEGEND = 12  # more lines or colours than this: no legend (the table tells them apart)
@@ -159,8 +160,8 @@ def plot_sweep(
                    fontsize="small")  # fmt: skip
     if colour_bar:
         bar = fig.colorbar(points, ax=list(axes[: len(columns)]), label=colour.label)
-        bar.ax.yaxis.set_major_formatter(PLAIN)  # 0.04, not 4 x 10^-2
-        bar.ax.yaxis.set_minor_formatter(PLAIN)
+        if colour.log:
+            _own_ticks(bar.ax.yaxis)
     fig.supxlabel(f"{x_scale.label}  ({x_path})", fontsize="medium")
     fig.suptitle(title or quantity(columns[0])[0].partition(" [")[0])
     _unclutter(fig, axes[: len(columns)], bool(x_scale.categories))
@@ -320,6 +321,12 @@ def headline_columns(table: pd.DataFrame, joints: Sequence[str]) -> dict[str, li
     return found
 
 
+def _changes(values: pd.Series) -> bool:
+    """Whether a column's values differ between cases by more than rounding (1 in 1e9)."""
+    finite = pd.to_numeric(values, errors="coerce").dropna().to_numpy(dtype=float)
+    return bool(finite.size) and np.ptp(finite) > SAME * np.abs(finite).max()
+
+
 def save_sweep_figures(
     table: pd.DataFrame,
     joints: Sequence[str],
@@ -336,7 +343,7 @@ def save_sweep_figures(
     titles = {name: title for name, title, _ in FIGURES_OF_MERIT}
     written = []
     for name, columns in headline_columns(table, joints).items():
-        if any(pd.to_numeric(table[c], errors="coerce").nunique() > 1 for c in columns):
+        if any(_changes(table[column]) for column in columns):
             figure = plot_sweep(table, columns, texts, titles[name])
             with suppress(ForeignFileError):  # a file of the user's of that name is kept
                 written.append(save_png(figure, path / f"{name}.png", dpi=120))
