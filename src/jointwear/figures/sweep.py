@@ -257,22 +257,25 @@ def _x_axis(ax: Axes, scale: _Scale, values: pd.Series, texts: Mapping[object, s
 def _unclutter(fig: Figure, axes: Sequence[Axes], categories: bool) -> None:
     """Make the x tick labels of the figure not overlap.
 
-    Labels at the values give way to the axis' own ticks; categories turn upright; then
-    every second, third, ... label is kept, until none overlap.
+    Labels at the values give way to the axis' own ticks, categories turn upright; then
+    every second, third, ... of those labels is kept, until none overlap.
     """
-    for step in range(1, MAX_THINNING + 1):
-        fig.draw_without_rendering()
-        if not any(_overlap(ax) for ax in axes):
+    ax = axes[-1]  # the x axis is shared, and the last panel shows its labels
+    fig.draw_without_rendering()
+    if not any(_overlap(panel) for panel in axes):
+        return
+    if categories:
+        for panel in axes:
+            panel.tick_params(axis="x", labelrotation=90)
+    else:
+        _own_ticks(ax.xaxis)
+    fig.draw_without_rendering()
+    ticks = [(label.get_position()[0], label.get_text()) for label in ax.get_xticklabels()]
+    for step in range(2, MAX_THINNING + 1):
+        if not any(_overlap(panel) for panel in axes):
             return
-        ax = axes[0]  # the x axis is shared: its ticks are those of every panel
-        if step == 1 and categories:
-            ax.tick_params(axis="x", labelrotation=90)
-        elif step == 1:
-            _own_ticks(ax.xaxis)
-        else:
-            ticks = [(t.get_position()[0], t.get_text()) for t in ax.get_xticklabels()]
-            ax.set_xticks(*zip(*ticks[::step], strict=True))
-            ax.xaxis.set_minor_formatter(NullFormatter())
+        ax.set_xticks(*zip(*ticks[::step], strict=True))
+        fig.draw_without_rendering()
 
 
 def _overlap(ax: Axes) -> bool:
