@@ -305,7 +305,7 @@ def _name(path: str) -> str:
     return path.rpartition(".")[2].replace("_", " ")
 
 
-def headline_columns(table: pd.DataFrame, joints: Sequence[str]) -> dict[str, list[str]]:
+def _headline_columns(table: pd.DataFrame, joints: Sequence[str]) -> dict[str, list[str]]:
     """Per figure of merit (file name), the table's columns of it, joint by joint.
 
     Only columns with a number; a figure of merit without them is left out.
@@ -345,7 +345,7 @@ def save_sweep_figures(
     path = Path(folder)
     titles = {name: title for name, title, _ in FIGURES_OF_MERIT}
     written = []
-    for name, columns in headline_columns(table, joints).items():
+    for name, columns in _headline_columns(table, joints).items():
         if any(_changes(table[column]) for column in columns):
             figure = plot_sweep(table, columns, texts, titles[name])
             with suppress(ForeignFileError):  # a file of the user's of that name is kept
