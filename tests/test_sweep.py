@@ -20,11 +20,12 @@ from pathlib import Path
 
 import pandas as pd
 import pytest
+from matplotlib.collections import PathCollection
 from typer.testing import CliRunner
 
 import jointwear as jw
 from jointwear.cli import app
-from jointwear.figures.sweep import plot_sweep, quantity
+from jointwear.figures.sweep import FIGURES_OF_MERIT, plot_sweep, quantity
 from jointwear.io import write_text
 from jointwear.model import ModelError
 from jointwear.studies.sweep.cases import make_cases, make_plan, parse_vary, si_value
@@ -144,11 +145,11 @@ def test_csv_and_parquet_hold_the_same_table(local_sweep):
     )
 
 
-def test_one_comparison_figure_per_headline_figure(local_sweep):
+def test_one_comparison_figure_per_figure_of_merit(local_sweep):
     _, out = local_sweep
-    figures = {p.name for p in (out / "figures").glob("*.png")}
-    for name in HEADLINE:
-        assert f"coupler_follower.{name}.png" in figures
+    figures = sorted(p.name for p in (out / "figures").glob("*.png"))
+    assert {"max_contact_force.png", "max_wear_depth.png"} <= set(figures)
+    assert set(figures) <= {f"{name}.png" for name, _, _ in FIGURES_OF_MERIT}
     assert all(p.stat().st_size > 5000 for p in (out / "figures").glob("*.png"))
 
 
@@ -156,10 +157,10 @@ def test_comparison_figures_speak_the_sweeps_units(local_sweep):
     _, out = local_sweep
     table = pd.read_parquet(out / "sweep.parquet")
     given = {FRICTION: {0.05: "0.05", 0.1: "0.1"}, RADIUS: {0.01: "10.0 mm", 0.0101: "10.1 mm"}}
-    figure = plot_sweep(table, "coupler_follower.max_wear_depth_journal_m", given)
+    figure = plot_sweep(table, ["coupler_follower.max_wear_depth_journal_m"], given)
     ax = figure.axes[0]
     assert [t.get_text() for t in ax.get_xticklabels()] == ["0.05", "0.1"]
-    assert [t.get_text() for t in ax.get_legend().get_texts()] == [
+    assert [t.get_text() for t in figure.legends[0].get_texts()] == [
         "bearing radius 10.0 mm",
         "bearing radius 10.1 mm",
     ]
@@ -405,6 +406,14 @@ def test_varied_values_in_the_table_are_the_model_si_values():
     assert youngs == pytest.approx(2.07e11)
 
 
+def test_a_key_the_model_turns_into_another_gives_its_si_value_too():
+    # radial_clearance is no field of the model: it sets the bearing radius
+    path = "joints.coupler_follower.clearance.radial_clearance"
+    model = jw.load_model(FOURBAR, [f"{path}=0.1 mm"])
+    assert si_value(model, path, "0.1 mm") == pytest.approx(1e-4, rel=1e-9)
+    assert si_value(model, "joints.2.clearance.radial_clearance", "0.1 mm") == pytest.approx(1e-4)
+
+
 def test_a_sweep_file_and_options_make_one_plan(tmp_path):
     plan_file = tmp_path / "plan.toml"
     plan_file.write_text(
@@ -561,13 +570,18 @@ def test_link_on_the_command_line_and_in_a_sweep_file(tmp_path):
     assert plan.vary == {}
 
 
-def test_the_comparison_figures_legend_stands_beside_its_axes(local_sweep):
-    _, out = local_sweep
-    table = pd.read_parquet(out / "sweep.parquet")
-    given = {FRICTION: {0.05: "0.05", 0.1: "0.1"}, RADIUS: {0.01: "10.0 mm", 0.0101: "10.1 mm"}}
-    figure = plot_sweep(table, "coupler_follower.max_wear_depth_journal_m", given)
-    figure.draw_without_rendering()  # lays the figure out
+def test_linked_values_with_units_are_si_numbers_in_the_table_and_drawn_as_points(tmp_path):
+    clearance = "joints.coupler_follower.clearance.radial_clearance"
+    results = jw.sweep(FOURBAR, tmp_path, vary={}, overrides=["solver.t_end=0.003"], workers=1,
+                       link={clearance: ["0.2 mm", "0.1 mm"], FRICTION: [0.1, 0.05]})  # fmt: skip
+    assert results.table["status"].eq("success").all()
+    for table in (pd.read_csv(tmp_path / "sweep.csv"), pd.read_parquet(tmp_path / "sweep.parquet")):
+        assert table[clearance].dtype == float
+        assert table[clearance].tolist() == pytest.approx([2e-4, 1e-4], rel=1e-9)
+    assert 0 < len(results.figures) <= len(FIGURES_OF_MERIT)
+    given = {clearance: {2e-4: "0.2 mm", 1e-4: "0.1 mm"}, FRICTION: {0.1: "0.1", 0.05: "0.05"}}
+    figure = plot_sweep(results.table, ["coupler_follower.max_contact_force_n"], given)
     ax = figure.axes[0]
-    box = ax.get_legend().get_window_extent()
-    assert box.x0 >= ax.get_window_extent().x1  # right of the axes: it hides no point
-    assert figure.bbox.contains(box.x1, box.y0)  # and within the figure
+    assert not ax.get_lines()  # two linked values: points, not a line
+    assert isinstance(ax.collections[0], PathCollection)
+    assert sorted(ax.collections[0].get_offsets()[:, 0]) == pytest.approx([0.1, 0.2])  # mm

@@ -182,6 +182,24 @@ def _to_si(value: object, dimension: str, expected: str) -> float:
     return result
 
 
+def unit_of(text: str) -> tuple[str, float] | None:
+    """The unit of a number-and-unit text and its size in SI: ``"9.8 mm"`` -> ("mm", 0.001).
+
+    None for a plain number, or for a text that is not a number and a unit pint reads.
+    """
+    match = _QUANTITY.fullmatch(text)
+    if match is None or match.group(2) is None:
+        return None
+    import pint
+
+    ureg = registry()
+    try:
+        size = ureg.Quantity(1.0, ureg.parse_units(match.group(2))).to_base_units().magnitude
+    except (pint.PintError, ArithmeticError, LookupError, ValueError):
+        return None
+    return match.group(2), float(size)
+
+
 def _is_quantity(value: object) -> bool:
     """Whether ``value`` looks like a pint Quantity (a magnitude with units)."""
     return all(hasattr(value, name) for name in ("magnitude", "units", "dimensionality"))

@@ -23,6 +23,9 @@ from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from pydantic import BaseModel
+from pydantic_core import to_jsonable_python
+
 from ...model import Model
 from ...model.errors import TOO_DEEP, TOO_LONG, ModelError, did_you_mean
 from ...model.files import too_deep
@@ -361,24 +364,37 @@ def _unique(cases: list[Case]) -> list[Case]:
 def si_value(model: Model, path: str, text: str) -> object:
     """The value a varied path has in the validated model: SI for quantities.
 
-    A number or a string stays as it is in the model; any other value (e.g. a pair of
-    moduli) is given as its JSON text. Where the path does not lead to a single model value,
-    the value as given.
+    The path is followed through the model's fields and properties, so a key that only the
+    model file knows and the model turns into its own (``clearance.radial_clearance``, which
+    sets the bearing radius) gives its SI value too. A number or a string stays as it is; any
+    other value (e.g. a pair of moduli) is given as its JSON text. Where the path does not
+    lead to a model value, the value as given.
     """
-    current: object = model.model_dump(mode="json")
+    current: object = model
     for key in path.split("."):
-        if isinstance(current, dict) and key in current:
-            current = current[key]
-        elif isinstance(current, list):
-            names = [item.get("name") if isinstance(item, dict) else None for item in current]
-            if key in names:
-                current = current[names.index(key)]
-            elif key.isdigit() and int(key) < len(current):
-                current = current[int(key)]
-            else:
-                return toml_value(text)
-        else:
+        current = _part(current, key)
+        if current is _MISSING:
             return toml_value(text)
     if isinstance(current, bool | int | float | str):
         return current
-    return json.dumps(current)
+    return json.dumps(to_jsonable_python(current))
+
+
+_MISSING = object()
+
+
+def _part(value: object, key: str) -> object:
+    """A table's field or property, an array's item (by name or index), a mapping's entry."""
+    if isinstance(value, BaseModel):
+        kind = type(value)
+        known = key in kind.model_fields or isinstance(getattr(kind, key, None), property)
+        return getattr(value, key) if known else _MISSING
+    if isinstance(value, Mapping):
+        return value.get(key, _MISSING)
+    if isinstance(value, tuple | list):
+        names = [getattr(item, "name", None) for item in value]
+        if key in names:
+            return value[names.index(key)]
+        if key.isdigit() and int(key) < len(value):
+            return value[int(key)]
+    return _MISSING

@@ -8,7 +8,8 @@ in local processes or on a Dask cluster, and writes into the sweep folder:
   long-life wear run), with ``case.json``: its overrides, resolved model and outcome;
 - ``sweep.csv`` and ``sweep.parquet``: one row per case: its name, the varied values (SI),
   status, error, wall time and the headline figures of its summary;
-- ``figures/``: each headline figure against the first varied value;
+- ``figures/``: a figure per headline figure of merit (contact force, wear depth, ...)
+  against the varied values (``jointwear.figures.sweep``);
 - ``sweep.json``: the sweep itself (model, varied values, settings, case names).
 
 A failed case is recorded with its error and the others go on. After Ctrl-C or SIGTERM the
@@ -204,12 +205,7 @@ def _draw(folder: Path, table: pd.DataFrame, cases: Sequence[Case], joints: set[
         path: dict(zip(table[path], [c.values[path] for c in cases], strict=True))
         for path in cases[0].values
     }
-    headline = [
-        c
-        for c in table.columns
-        if c.partition(".")[0] in joints and c not in FIXED_COLUMNS and ".whole_run." not in c
-    ]  # the steady state's figures; the whole run's are in the table
-    return save_sweep_figures(table, headline, given, folder / FIGURES)
+    return save_sweep_figures(table, sorted(joints), given, folder / FIGURES)
 
 
 def _mapping(vary: Mapping[str, Sequence[object]]) -> dict[str, Sequence[object]]:
