@@ -7,8 +7,10 @@ finished computations lost:
 1. ``mutations``: model files mutated from ``examples/`` (extreme numbers, odd units, wrong
    types, deep nesting, control characters in names, duplicate names, removed keys, degenerate
    geometry, long strings, corrupt text, odd ``extends``); ``check`` on each, ``run`` on a
-   sample. Run in-process (``typer.testing.CliRunner`` on ``jointwear.cli.app``) by worker
-   processes that a watchdog restarts after a crash or a hang.
+   sample, a share of the runs with figures (``--figure-share``) and of those with the
+   animation (``--animation-share``). Run in-process (``typer.testing.CliRunner`` on
+   ``jointwear.cli.app``) by worker processes that a watchdog restarts after a crash or a
+   hang.
 2. ``cli``: odd arguments of ``run``, ``check``, ``plot``, ``sweep`` and ``life`` (times,
    ``--set``, ``--out`` that cannot be written, damaged folders, sweep files, cycles).
 3. ``signals``: SIGINT or SIGTERM at a random moment of ``run``, ``life`` and ``sweep``
@@ -548,8 +550,11 @@ def mutation_tasks(args: argparse.Namespace, work: Path) -> list[dict]:
         path.write_bytes(text)
         out = work / "mruns" / f"m{i:05d}"
         steps = [{"kind": "check", "argv": ["check", str(path)], "timeout": args.timeout}]
-        run_argv = ["run", str(path), "--out", str(out), "--t-end", "0.002", "--no-figures",
-                    "--no-ideal"]  # fmt: skip
+        run_argv = ["run", str(path), "--out", str(out), "--t-end", "0.002", "--no-ideal"]
+        if rng.random() < args.figure_share:  # figures drawn by the helpers, maybe animated
+            run_argv += ["--animation"] if rng.random() < args.animation_share else []
+        else:
+            run_argv.append("--no-figures")
         when = (
             "always"
             if i % args.run_every == 0
@@ -996,6 +1001,14 @@ def summary_problems(folder: Path, want_success: bool) -> list[str]:
     return problems
 
 
+def figure_problems(folder: Path, animation: bool) -> list[str]:
+    """What is missing of a successful run's figures: the energy PNG, and the GIF if asked."""
+    problems = [] if is_file(folder / "energy.png") else ["run_without_figures"]
+    if animation and not is_file(folder / "mechanism.gif"):
+        problems.append("run_without_animation")
+    return problems
+
+
 def status_of(folder: Path) -> str | None:
     """The status in a folder's summary.json, if any."""
     with contextlib.suppress(OSError, ValueError, AttributeError):
@@ -1023,6 +1036,8 @@ def analyse(step: dict, exit_code: int, output: str, stderr: str, info: dict | N
     kind, out = step["kind"], step.get("out")
     if info is None and kind in ("run", "life") and out and exit_code in (0, 1):
         kinds += summary_problems(Path(out), want_success=exit_code == 0)
+    if kind == "run" and exit_code == 0 and "--no-figures" not in step["argv"]:
+        kinds += figure_problems(Path(out) / "figures", "--animation" in step["argv"])
     sweep_table = kind == "sweep" and out and is_file(Path(out) / "sweep.csv")
     if info is None and kind == "sweep" and out and exit_code in (0, 1) and not sweep_table:
         kinds.append("sweep_without_table")
@@ -1757,6 +1772,18 @@ def parse_args(argv: list[str] | None = None) -> argparse.Namespace:
         type=float,
         default=0.25,
         help="also run this share of the other models that pass check",
+    )
+    p.add_argument(
+        "--figure-share",
+        type=float,
+        default=0.3,
+        help="share of the mutated models' runs that draw figures",
+    )
+    p.add_argument(
+        "--animation-share",
+        type=float,
+        default=0.3,
+        help="share of the runs with figures that also write the animation",
     )
     p.add_argument("--timeout", type=float, default=60.0, help="per check or run [s]")
     p.add_argument("--workers", type=int, default=2)
