@@ -159,3 +159,16 @@ def _alive(pid: int) -> bool:
             return stat.read().rpartition(")")[2].split()[0] != "Z"
     except FileNotFoundError:
         return False
+
+
+def test_helpers_that_cannot_start_leave_the_figures_to_the_caller(monkeypatch):
+    import multiprocessing.context
+
+    def no_room(process):
+        raise OSError(28, "No space left on device")
+
+    monkeypatch.setattr(multiprocessing.context.ForkServerProcess, "start", no_room)
+    with render.drawing_helper():  # its end stops helpers that never started
+        pngs = render.render_pngs([_Blank(), _Blank()])
+        assert all(h.failed and h.process is None for h in render._helpers)
+    assert pngs == [render._png(_Blank(), render.DPI)] * 2

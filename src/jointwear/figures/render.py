@@ -94,14 +94,17 @@ class _Helper:
         try:
             self.pipe, theirs = self.context.Pipe()
             lifeline, self.lifeline = self.context.Pipe(duplex=False)
-            # forked by the server: born with its dispositions (stop signals ignored)
-            self.process = self.context.Process(target=_serve, args=(theirs, lifeline), daemon=True)
-            self.process.start()
-            theirs.close()
-            lifeline.close()
-        except (OSError, EOFError, ValueError):  # no fork server: it was killed, or is gone
+            try:  # forked by the server: born with its dispositions (stop signals ignored)
+                process = self.context.Process(target=_serve, args=(theirs, lifeline), daemon=True)
+                process.start()
+            finally:
+                theirs.close()
+                lifeline.close()
+        except Exception:  # no fork server (killed, gone), no file descriptors, no memory, ...
             self.failed = True
-        return not self.failed
+            return False
+        self.process = process
+        return True
 
     def stop(self, at_once: bool = False) -> None:
         """Ask the helper to leave; kill it if it has not within ``GOODBYE`` (or at once).
