@@ -143,8 +143,9 @@ def test_spring_damper_columns_are_the_law_of_the_saved_motion():
 
 
 def test_mass_times_acceleration_is_gravity_plus_the_load_columns():
-    # One free body, its motion differentiated from the saved velocities: m a = m g + F and
-    # J alpha = T + (A s) x F, F the point force's columns at body point s, T the torque's.
+    # Body a, free (b falls beside it), its motion differentiated from the saved velocities:
+    # m a = m g + F and J alpha = T + (A s) x F, F the point force's columns at body point s,
+    # T the torque's.
     point = (0.1, 0.05)
     harmonic = {"type": "harmonic", "offset": 1.0, "amplitude": 3.0,
                 "angular_frequency": 20.0, "phase": 0.4}  # fmt: skip
@@ -156,8 +157,9 @@ def test_mass_times_acceleration_is_gravity_plus_the_load_columns():
     fx, fy = df["load_a_end_fx"].to_numpy(), df["load_a_end_fy"].to_numpy()
     np.testing.assert_allclose(fx, 1.0 + 3.0 * np.sin(20.0 * t + 0.4), rtol=1e-14, atol=1e-14)
     np.testing.assert_allclose(fy, 2.0 + 5.0 * t, rtol=1e-14)
-    np.testing.assert_array_equal(df["load_brake_torque"], -0.3)
-    moment = df["load_brake_torque"] + _cross(_arm(df["phi_a"].to_numpy(), point), [fx, fy])
+    torque = df["load_brake_torque"].to_numpy()
+    np.testing.assert_array_equal(torque, -0.3)
+    moment = torque + _cross(_arm(df["phi_a"].to_numpy(), point), [fx, fy])
     dt = t[2:] - t[:-2]
 
     def rate(column: str) -> np.ndarray:  # central differences of the saved motion

@@ -108,7 +108,7 @@ def column_names(model: Model) -> list[str]:
 
 
 def load_columns(model: Model) -> dict[str, str]:
-    """The time-series columns of the model's loads but gravity, in file order: quantity.
+    """Each time-series column of the model's loads but gravity, in file order: its quantity.
 
     Each load's columns are ``load_<name>_<quantity>`` (``LOAD_QUANTITIES``); a load with
     no name is named after what it acts on (``<body>_<point>`` for a point force, ``<body>``

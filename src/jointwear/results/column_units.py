@@ -4,8 +4,8 @@ Time-series columns are named after the model's bodies, drivers and joints
 (``system.column_names``): ``<quantity>_<body>`` (``phi_follower``), ``torque_<driver>``,
 ``load_<load>_<quantity>`` (``load_gas_fx``), ``<joint>_<quantity>``
 (``coupler_follower_fn``); the model's own names tell where the prefix or suffix ends, so a
-body or joint name with underscores is read right. The other
-tables' columns end in their unit (``depth_m``, ``angle_deg``, ``worn_volume_m3``).
+body or joint name with underscores is read right. The other tables' columns end in their
+unit (``depth_m``, ``angle_deg``, ``worn_volume_m3``).
 
 Units are written as UDUNITS (netCDF's ``units`` attribute) reads them: ``m``, ``m/s``,
 ``m/s^2``, ``N m``; ``1`` for a dimensionless number or a count, ``""`` for a text column
