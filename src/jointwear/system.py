@@ -18,12 +18,21 @@ from .kernels.elements import slider as sc
 from .kernels.loop import UserEvents
 from .model import Model
 from .model.clearance import WEAR_DISTRIBUTIONS, Clearance, law_parameters
+from .model.sections import Load
 from .model.slide_clearance import SlideClearance
 from .pattern import build_pattern
 
 GROUND = -1
 MAX_COEFFICIENTS = 8
 BODY_COLUMNS = ("x", "y", "phi", "vx", "vy", "omega", "ax", "ay", "alpha")
+# A load's columns (kernels.forces.write_loads): a point force's components, a torque, a
+# spring-damper's force along its line, a rotational spring-damper's torque.
+LOAD_QUANTITIES = {
+    "point_force": ("fx", "fy"),
+    "torque": ("torque",),
+    "spring_damper": ("force",),
+    "rotational_spring_damper": ("torque",),
+}
 PROJECTION_TOLERANCE = 1e-13  # constraint norm the projections reach, of the mechanism's size
 
 
@@ -94,25 +103,71 @@ def freed_degrees_of_freedom(model: Model) -> int:
 
 def column_names(model: Model) -> list[str]:
     """Names of the time-series columns, in the order ``kernels.outputs.write_row`` fills."""
-    names = ["time"]
+    before, after = _columns_around_loads(model)
+    return [*before, *load_columns(model), *after]
+
+
+def load_columns(model: Model) -> dict[str, str]:
+    """Each time-series column of the model's loads but gravity, in file order: its quantity.
+
+    Each load's columns are ``load_<name>_<quantity>`` (``LOAD_QUANTITIES``); a load with
+    no name is named after what it acts on (``<body>_<point>`` for a point force, ``<body>``
+    for a torque, ``<body 1>_<body 2>`` for a spring-damper). A name another load or column
+    has already takes ``_2``, ``_3``, ...; named loads choose first.
+    """
+    before, after = _columns_around_loads(model)
+    taken = set(before) | set(after)
+    loads = [load for load in model.forces if load.type != "gravity"]
+    stems: dict[int, str] = {}
+    for named in (True, False):
+        for i, load in enumerate(loads):
+            if (load.name is not None) != named:
+                continue
+            base = stem = f"load_{load.name or _load_name(load)}"
+            count = 1
+            while stem in stems.values() or any(
+                f"{stem}_{quantity}" in taken for quantity in LOAD_QUANTITIES[load.type]
+            ):
+                count += 1
+                stem = f"{base}_{count}"
+            stems[i] = stem
+    return {
+        f"{stems[i]}_{quantity}": quantity
+        for i, load in enumerate(loads)
+        for quantity in LOAD_QUANTITIES[load.type]
+    }
+
+
+def _load_name(load: Load) -> str:
+    """A load's name from what it acts on, for a load the model leaves unnamed."""
+    if load.type == "point_force":
+        return f"{load.body}_{load.point}"
+    if load.type == "torque":
+        return load.body
+    return "_".join(load.bodies)
+
+
+def _columns_around_loads(model: Model) -> tuple[list[str], list[str]]:
+    """The time-series columns before the loads' and after them."""
+    before = ["time"]
     for body in model.bodies:
-        names += [f"{c}_{body.name}" for c in BODY_COLUMNS]
+        before += [f"{c}_{body.name}" for c in BODY_COLUMNS]
     for driver in model.drivers:
-        names.append(f"{'torque' if driver.type == 'angle' else 'force'}_{driver.name}")
-    clearance = model.clearance_joints
+        before.append(f"{'torque' if driver.type == 'angle' else 'force'}_{driver.name}")
+    after = []
     for joint in (j for j in model.joints if j.clearance is None):
-        names += [f"{joint.name}_fx", f"{joint.name}_fy"]
-    for joint in clearance:
-        names += [f"{joint.name}_{c}" for c in jc.OUTPUT_NAMES]
+        after += [f"{joint.name}_fx", f"{joint.name}_fy"]
+    for joint in model.clearance_joints:
+        after += [f"{joint.name}_{c}" for c in jc.OUTPUT_NAMES]
         if joint.clearance.lubrication != "none":
-            names += [f"{joint.name}_{c}" for c in jc.FILM_OUTPUT_NAMES]
+            after += [f"{joint.name}_{c}" for c in jc.FILM_OUTPUT_NAMES]
     for joint in model.slider_joints:
         finite = joint.clearance.guide_length is not None
-        names += [f"{joint.name}_{c}" for c in sc.output_names(finite)]
-    names += ["energy_kinetic", "energy_potential"]
+        after += [f"{joint.name}_{c}" for c in sc.output_names(finite)]
+    after += ["energy_kinetic", "energy_potential"]
     if model.has_clearance:
-        names.append("energy_contact")
-    return [*names, "constraint_violation"]
+        after.append("energy_contact")
+    return before, [*after, "constraint_violation"]
 
 
 class _Functions:

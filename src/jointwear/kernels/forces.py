@@ -8,6 +8,11 @@
 | l0 | free length (rotational: free angle) | m (rad) |
 
 A force F at body point s adds (F_x, F_y, (A s) x F) to that body's entries.
+
+``write_loads`` puts each load as it is applied in the output row (``system.load_columns``
+names them): a point force's (F_x, F_y) [N]; a torque [N m]; a spring-damper's force on its
+second point along the line from its first, positive pushing them apart [N]; a rotational
+spring-damper's torque on its second body [N m]. Gravity has no columns.
 """
 
 import math
@@ -67,6 +72,27 @@ def _spring_rate(q, qd, mech, e, ux, uy):
 
 
 @njit(cache=True, no_cpython_wrapper=True)
+def _spring_tension(q, qd, mech, e):
+    """Tension [N] of spring-damper e (positive pulls its points together), and its axis u."""
+    ux, uy, length = _spring_axis(q, mech, e)
+    if length == 0.0:  # coincident ends: no direction, so no force
+        return 0.0, ux, uy
+    k, c, l0 = mech.force_param[e, 0], mech.force_param[e, 1], mech.force_param[e, 2]
+    return k * (length - l0) + c * _spring_rate(q, qd, mech, e, ux, uy), ux, uy
+
+
+@njit(cache=True, no_cpython_wrapper=True)
+def _spring_torque(q, qd, mech, e):
+    """Torque [N m] rotational spring-damper e puts on its first body (minus that on the second)."""
+    k, c, a0 = mech.force_param[e, 0], mech.force_param[e, 1], mech.force_param[e, 2]
+    b1 = mech.force_body[e, 0]
+    b2 = mech.force_body[e, 1]
+    rel = angle(q, b2) - angle(q, b1) - a0
+    rate = angular_velocity(qd, b2) - angular_velocity(qd, b1)
+    return k * rel + c * rate
+
+
+@njit(cache=True, no_cpython_wrapper=True)
 def applied_forces(t, q, qd, mech, g):
     """Fill g [N, N, N m] with gravity and every applied load at time t [s]."""
     nb = mech.mass.shape[0]
@@ -86,22 +112,40 @@ def applied_forces(t, q, qd, mech, g):
             if b1 >= 0:
                 g[3 * b1 + 2] += _function_value(mech, mech.force_function[e, 0], t)
         elif kind == ForceKind.SPRING_DAMPER:
-            k, c, l0 = mech.force_param[e, 0], mech.force_param[e, 1], mech.force_param[e, 2]
-            ux, uy, length = _spring_axis(q, mech, e)
-            rate = _spring_rate(q, qd, mech, e, ux, uy)
-            tension = k * (length - l0) + c * rate  # pulls the two points together
+            tension, ux, uy = _spring_tension(q, qd, mech, e)
             s = mech.force_point[e]
             _apply(q, g, b1, s[0, 0], s[0, 1], tension * ux, tension * uy)
             _apply(q, g, b2, s[1, 0], s[1, 1], -tension * ux, -tension * uy)
         else:  # rotational spring-damper on phi_2 - phi_1
-            k, c, a0 = mech.force_param[e, 0], mech.force_param[e, 1], mech.force_param[e, 2]
-            rel = angle(q, b2) - angle(q, b1) - a0
-            rate = angular_velocity(qd, b2) - angular_velocity(qd, b1)
-            torque = k * rel + c * rate
+            torque = _spring_torque(q, qd, mech, e)
             if b1 >= 0:
                 g[3 * b1 + 2] += torque
             if b2 >= 0:
                 g[3 * b2 + 2] -= torque
+
+
+@njit(cache=True, no_cpython_wrapper=True)
+def write_loads(t, q, qd, mech, row, c):
+    """Write every load but gravity, as applied at time t [s], from column c of row.
+
+    Returns the column after the last written.
+    """
+    for e in range(mech.force_kind.shape[0]):
+        kind = mech.force_kind[e]
+        if kind == ForceKind.POINT_FORCE:
+            row[c] = _function_value(mech, mech.force_function[e, 0], t)
+            row[c + 1] = _function_value(mech, mech.force_function[e, 1], t)
+            c += 2
+        elif kind == ForceKind.TORQUE:
+            row[c] = _function_value(mech, mech.force_function[e, 0], t)
+            c += 1
+        elif kind == ForceKind.SPRING_DAMPER:
+            row[c] = -_spring_tension(q, qd, mech, e)[0]
+            c += 1
+        else:
+            row[c] = -_spring_torque(q, qd, mech, e)
+            c += 1
+    return c
 
 
 @njit(cache=True, no_cpython_wrapper=True)

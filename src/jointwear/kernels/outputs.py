@@ -2,16 +2,17 @@
 
 Row layout (``system.column_names`` gives the names): time; per body x, y, phi, vx, vy,
 omega, ax, ay, alpha; per driver the generalised force it applies (-lambda of its row);
-per ideal joint the reaction force (fx, fy) on its second body; per contact element its
-columns (``elements.write_outputs``); kinetic and potential energy; with contact elements,
-the elastic energy of their contacts; the 2-norm of the position constraints.
+per applied load but gravity its force or torque (``forces.write_loads``); per ideal joint
+the reaction force (fx, fy) on its second body; per contact element its columns
+(``elements.write_outputs``); kinetic and potential energy; with contact elements, the
+elastic energy of their contacts; the 2-norm of the position constraints.
 """
 
 from numba import njit
 
 from . import elements
 from .dynamics import constraint_norm, rhs, row_multipliers
-from .forces import potential_energy
+from .forces import potential_energy, write_loads
 
 
 @njit(cache=True, no_cpython_wrapper=True)
@@ -63,6 +64,7 @@ def fill_row(t, y, problem, ydot, row):
     for d in range(mech.driver_kind.shape[0]):
         row[c] = -dyn.lam[mech.driver_row[d]]
         c += 1
+    c = write_loads(t, y[:n], y[n:], mech, row, c)
     for jt in range(mech.joint_kind.shape[0]):
         j = mech.joint_body[jt, 1]
         for k in range(2):

@@ -2,9 +2,10 @@
 
 Time-series columns are named after the model's bodies, drivers and joints
 (``system.column_names``): ``<quantity>_<body>`` (``phi_follower``), ``torque_<driver>``,
-``<joint>_<quantity>`` (``coupler_follower_fn``); the model's own names tell where the
-prefix or suffix ends, so a body or joint name with underscores is read right. The other
-tables' columns end in their unit (``depth_m``, ``angle_deg``, ``worn_volume_m3``).
+``load_<load>_<quantity>`` (``load_gas_fx``), ``<joint>_<quantity>``
+(``coupler_follower_fn``); the model's own names tell where the prefix or suffix ends, so a
+body or joint name with underscores is read right. The other tables' columns end in their
+unit (``depth_m``, ``angle_deg``, ``worn_volume_m3``).
 
 Units are written as UDUNITS (netCDF's ``units`` attribute) reads them: ``m``, ``m/s``,
 ``m/s^2``, ``N m``; ``1`` for a dimensionless number or a count, ``""`` for a text column
@@ -14,6 +15,7 @@ Units are written as UDUNITS (netCDF's ``units`` attribute) reads them: ``m``, `
 from __future__ import annotations
 
 from ..model import Model
+from ..system import load_columns
 
 TEXT = ""  # a column of names (joint, surface, event, ...)
 UNKNOWN = "?"
@@ -29,6 +31,7 @@ BODY = {
     "alpha": "rad/s^2",
 }  # <quantity>_<body>: system.BODY_COLUMNS
 DRIVER = {"torque": "N m", "force": "N"}  # <kind>_<driver>
+LOAD = {"fx": "N", "fy": "N", "force": "N", "torque": "N m"}  # system.LOAD_QUANTITIES
 JOINT = {
     "fx": "N",  # reaction (ideal joint) or contact force (clearance joint) on the second body
     "fy": "N",
@@ -118,6 +121,9 @@ def column_unit(column: str, model: Model | None = None) -> str:
 
 def _model_unit(column: str, model: Model) -> str | None:
     """The unit of a time-series column named after one of ``model``'s parts, or None."""
+    loads = load_columns(model)
+    if column in loads:
+        return LOAD[loads[column]]
     bodies = {body.name for body in model.bodies}
     for quantity, unit in BODY.items():
         if column.startswith(f"{quantity}_") and column[len(quantity) + 1 :] in bodies:
