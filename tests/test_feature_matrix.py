@@ -301,6 +301,9 @@ def test_python_api(folders, name, tmp_path):
     assert loaded.model == model
     assert list(loaded.timeseries.columns) == list(results.timeseries.columns)
     assert set(loaded.units()) == set(results.timeseries.columns)
+    per_load = {"gravity": 0, "point_force": 2}  # columns; a torque or spring-damper has one
+    loads = [c for c in results.timeseries.columns if c.startswith("load_")]
+    assert len(loads) == sum(per_load.get(load.type, 1) for load in model.forces)
     loaded.plot(results.timeseries.columns[1])
     loaded.export(tmp_path / "api.nc")
 
