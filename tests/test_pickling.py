@@ -59,3 +59,15 @@ def test_a_model_with_every_function_type_round_trips(tmp_path):
     ):  # fmt: skip
         varied = model.with_values(changes) if changes else model
         assert pickle.loads(pickle.dumps(varied)) == varied
+
+
+def test_results_of_a_model_with_every_function_type_pickle(tmp_path):
+    # what a drawing carries to the figure helpers: a helper given what does not pickle
+    # draws nothing, and the figures are drawn in the command's process, one by one
+    path = tmp_path / "model.toml"
+    path.write_text((EXAMPLES / "slider_crank_clearance.toml").read_text() + FUNCTIONS)
+    results = jw.simulate(jw.load_model(path, overrides=["solver.t_end=0.002"]))
+    assert results.status == "success"
+    again = pickle.loads(pickle.dumps(results))
+    assert again.model == results.model
+    assert again.timeseries.equals(results.timeseries)
