@@ -172,3 +172,42 @@ def test_helpers_that_cannot_start_leave_the_figures_to_the_caller(monkeypatch):
         pngs = render.render_pngs([_Blank(), _Blank()])
         assert all(h.failed and h.process is None for h in render._helpers)
     assert pngs == [render._png(_Blank(), render.DPI)] * 2
+
+
+KILLED_AT_ONCE = """
+import os, signal
+from jointwear.figures import render
+
+if __name__ == "__main__":
+    with render.drawing_helper():  # the fork server starts importing matplotlib
+        os.kill(os.getpid(), signal.SIGKILL)
+"""
+
+
+def test_the_fork_server_does_not_outlive_a_command_killed_while_it_imports(tmp_path):
+    script = tmp_path / "killed.py"
+    script.write_text(KILLED_AT_ONCE)
+    command = subprocess.Popen([sys.executable, str(script)], start_new_session=True)
+    command.wait(60)
+    deadline = time.monotonic() + 0.5  # the imports take a second or more
+    while _session(command.pid) and time.monotonic() < deadline:
+        time.sleep(0.02)
+    left = _session(command.pid)
+    for pid in left:
+        os.kill(pid, signal.SIGKILL)
+    assert not left
+
+
+def _session(session: int) -> list[int]:
+    """The running (not zombie) processes of a session."""
+    pids = []
+    for entry in os.listdir("/proc"):
+        if entry.isdigit():
+            try:
+                with open(f"/proc/{entry}/stat") as stat:
+                    fields = stat.read().rpartition(")")[2].split()
+            except OSError:
+                continue
+            if int(fields[3]) == session and fields[0] != "Z":
+                pids.append(int(entry))
+    return pids

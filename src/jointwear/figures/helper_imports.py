@@ -3,10 +3,34 @@
 The helpers are forked from the server with these modules in memory. Their objects are set
 apart from the garbage collector (``gc.freeze``): they live as long as the processes, and
 collecting them would slow the drawing and each process's exit (about 0.4 s of it).
+
+The server notices that its command has ended only after these imports (a second or two):
+should the command end during them (an interrupt, a kill), a watcher ends the server at once.
 """
 
 import gc
+import os
+import threading
 
-from . import clearance, run, slider  # noqa: F401  (the plotting modules a Drawing names)
+from .render import COMMAND_VARIABLE
 
+WATCH_INTERVAL = 0.05  # [s] how often the watcher looks for the command
+
+
+def _leave_with(command: int, imported: threading.Event) -> None:
+    """End this process at once if it is no longer the child of ``command`` (which ended)."""
+    while not imported.wait(WATCH_INTERVAL):
+        if os.getppid() != command:
+            os._exit(0)
+
+
+_imported = threading.Event()
+_command = int(os.environ.get(COMMAND_VARIABLE) or os.getppid())  # the latter if it is gone
+_watcher = threading.Thread(target=_leave_with, args=(_command, _imported), daemon=True)
+_watcher.start()
+
+from . import clearance, run, slider  # noqa: E402, F401  (the plotting modules a Drawing names)
+
+_imported.set()
+_watcher.join()  # no thread is left when the server forks the helpers
 gc.freeze()

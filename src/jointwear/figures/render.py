@@ -49,6 +49,7 @@ PNG_COMPRESSION = 1  # zlib level of the PNGs: level 6 (the default) takes 20% o
 PATIENCE = 120.0  # [s] the longest a helper may take over one drawing (a figure takes ~0.5 s)
 GOODBYE = 1.0  # [s] the longest the block's end waits for a helper to leave before a kill
 PRELOAD = f"{__package__}.helper_imports"  # the fork server imports it before it forks
+COMMAND_VARIABLE = "JOINTWEAR_FIGURES_FOR"  # the fork server's command (helper_imports)
 HANDOVER = "figure handover"  # the name of the threads that hand drawings to the helpers
 
 Answer = bytes | BaseException  # a PNG, or what the drawing raised
@@ -144,7 +145,7 @@ def drawing_helper(wanted: bool = True) -> Iterator[None]:
         return
     context = multiprocessing.get_context("forkserver")
     context.set_forkserver_preload([PRELOAD])
-    with _signals_ignored_by_children():  # the server and helpers inherit its dispositions
+    with _signals_ignored_by_children(), _command_known_to_children():
         multiprocessing.forkserver.ensure_running()  # returns at once; the server imports
     helpers = [_Helper(context) for _ in range(HELPERS)]
     _helpers = helpers
@@ -175,6 +176,20 @@ def _signals_ignored_by_children() -> Iterator[None]:
         for s, handler in handlers.items():
             signal.signal(s, handler)
         signal.pthread_sigmask(signal.SIG_SETMASK, mask)
+
+
+@contextmanager
+def _command_known_to_children() -> Iterator[None]:
+    """Processes started in the block find this process's id in ``COMMAND_VARIABLE``."""
+    before = os.environ.get(COMMAND_VARIABLE)
+    os.environ[COMMAND_VARIABLE] = str(os.getpid())
+    try:
+        yield
+    finally:
+        if before is None:
+            del os.environ[COMMAND_VARIABLE]
+        else:
+            os.environ[COMMAND_VARIABLE] = before
 
 
 def render_pngs(drawings: Sequence[Callable[[], Figure]], dpi: int = DPI) -> list[bytes]:
