@@ -17,6 +17,8 @@ from matplotlib.figure import Figure
 
 from jointwear.figures import render
 
+pytestmark = pytest.mark.timeout(180)  # a hang fails here, not the whole run
+
 
 class _Blank:
     """A blank figure, drawn wherever it is called; it knows the process that made it."""
@@ -49,6 +51,11 @@ class _RaisesInHelpers(_Blank):
         return super().__call__()
 
 
+class _RaisesEverywhere(_Blank):
+    def __call__(self) -> Figure:
+        raise LookupError("no such column")
+
+
 def _helper_processes() -> list:
     return [h.process for h in render._helpers if h.process is not None]
 
@@ -70,18 +77,24 @@ def test_a_drawing_that_does_not_pickle_is_drawn_here():
 
     with render.drawing_helper():
         (png,) = render.render_pngs([local])
+        assert all(h.process is None for h in render._helpers)  # none was given it
     assert png == render._png(_Blank(), render.DPI)
 
 
 def test_a_helper_killed_while_drawing_leaves_its_figure_to_the_caller():
     with render.drawing_helper():
         pngs = render.render_pngs([_DiesInHelpers(), _Blank(), _DiesInHelpers(), _Blank()])
+        assert any(h.failed for h in render._helpers)  # a helper died drawing
     assert pngs == [render._png(_Blank(), render.DPI)] * 4
 
 
-def test_an_error_in_a_helper_is_raised_by_the_caller_as_it_was():
-    with render.drawing_helper(), pytest.raises(LookupError, match="no such column"):
-        render.render_pngs([_RaisesInHelpers()])
+def test_a_drawing_that_fails_in_a_helper_is_drawn_here_where_its_error_is_raised():
+    with render.drawing_helper():
+        pngs = render.render_pngs([_RaisesInHelpers(), _Blank()])
+        assert not any(h.failed for h in render._helpers)  # the helper draws on
+        with pytest.raises(LookupError, match="no such column"):
+            render.render_pngs([_RaisesEverywhere()])
+    assert pngs == [render._png(_Blank(), render.DPI)] * 2
 
 
 def test_a_helper_that_does_not_answer_is_given_up_killed_and_said(monkeypatch, capsys):
@@ -93,25 +106,24 @@ def test_a_helper_that_does_not_answer_is_given_up_killed_and_said(monkeypatch, 
     assert time.monotonic() - started < 60.0  # the helpers start (~10 s cold), then 1 s each
     assert pngs == [render._png(_Blank(), render.DPI)] * 3
     assert not any(p.is_alive() for p in processes)
-    assert "did not answer within 1 s" in capsys.readouterr().err
+    assert "did not finish within 1 s" in capsys.readouterr().err
 
 
 def test_handing_over_returns_before_the_helpers_have_started(monkeypatch):
-    release = threading.Event()
+    handed_over = threading.Event()
     started = render._Helper._started
+    waited_for_the_caller = []
 
-    def slow_start(helper):
-        release.wait(20.0)  # as a fork server still importing
+    def slow_start(helper):  # as a fork server still importing
+        waited_for_the_caller.append(handed_over.wait(20.0))
         return started(helper)
 
     monkeypatch.setattr(render._Helper, "_started", slow_start)
     with render.drawing_helper():
-        began = time.monotonic()
         wait = render.start_pngs([_Blank()])
-        handed_over_in = time.monotonic() - began
-        release.set()
+        handed_over.set()
         (png,) = wait()
-    assert handed_over_in < 1.0
+    assert waited_for_the_caller and all(waited_for_the_caller)
     assert png == render._png(_Blank(), render.DPI)
 
 
@@ -124,20 +136,23 @@ from jointwear.figures import render
 if __name__ == "__main__":
     with render.drawing_helper():
         wait = render.start_pngs([_StuckInHelpers(), _StuckInHelpers()])
-        while len([h for h in render._helpers if h.process and h.process.pid]) < 2:
+        for _ in range(1200):  # a minute at most
+            if len([h for h in render._helpers if h.process and h.process.pid]) == 2:
+                break
             time.sleep(0.05)
         print(*(h.process.pid for h in render._helpers), flush=True)
         wait()
 """
 
 
-@pytest.mark.parametrize("stop", [signal.SIGKILL, signal.SIGTERM])
+@pytest.mark.parametrize("stop", [signal.SIGKILL, signal.SIGINT])
 def test_the_helpers_never_outlive_the_command_whatever_ends_it(tmp_path, stop):
+    # SIGKILL: nothing of the command runs; SIGINT: the block ends while the helpers draw
     script = tmp_path / "stuck.py"
     script.write_text(STUCK_COMMAND)
     here = os.path.dirname(__file__)
     command = subprocess.Popen([sys.executable, str(script), here], stdout=subprocess.PIPE,
-                               text=True)  # fmt: skip
+                               stderr=subprocess.DEVNULL, text=True)  # fmt: skip
     try:
         pids = [int(pid) for pid in command.stdout.readline().split()]
         assert len(pids) == 2
@@ -189,7 +204,7 @@ def test_the_fork_server_does_not_outlive_a_command_killed_while_it_imports(tmp_
     script.write_text(KILLED_AT_ONCE)
     command = subprocess.Popen([sys.executable, str(script)], start_new_session=True)
     command.wait(60)
-    deadline = time.monotonic() + 0.5  # the imports take a second or more
+    deadline = time.monotonic() + 1.0  # the imports take a second or two
     while _session(command.pid) and time.monotonic() < deadline:
         time.sleep(0.02)
     left = _session(command.pid)

@@ -17,7 +17,7 @@ from .render import COMMAND_VARIABLE
 WATCH_INTERVAL = 0.05  # [s] how often the watcher looks for the command
 
 
-def _leave_with(command: int, imported: threading.Event) -> None:
+def _exit_if_orphaned(command: int, imported: threading.Event) -> None:
     """End this process at once if it is no longer the child of ``command`` (which ended)."""
     while not imported.wait(WATCH_INTERVAL):
         if os.getppid() != command:
@@ -25,8 +25,9 @@ def _leave_with(command: int, imported: threading.Event) -> None:
 
 
 _imported = threading.Event()
-_command = int(os.environ.get(COMMAND_VARIABLE) or os.getppid())  # the latter if it is gone
-_watcher = threading.Thread(target=_leave_with, args=(_command, _imported), daemon=True)
+_command = os.environ.get(COMMAND_VARIABLE, "")  # without it, the parent (if not gone already)
+_watched = int(_command) if _command.isdigit() else os.getppid()
+_watcher = threading.Thread(target=_exit_if_orphaned, args=(_watched, _imported), daemon=True)
 _watcher.start()
 
 from . import clearance, run, slider  # noqa: E402, F401  (the plotting modules a Drawing names)

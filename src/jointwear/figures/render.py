@@ -11,13 +11,19 @@ process.
 
 What can go wrong, and what then happens:
 
-1. A drawing that does not pickle, a helper that dies or cannot start: that figure is drawn
-   in the caller's process.
-2. A helper that has not answered a drawing within ``PATIENCE``: it is killed, one line on
-   stderr says so, and the figures left are drawn in the caller's process.
+1. A drawing that does not pickle or that fails in a helper, a helper that dies or cannot
+   start, no fork server: that figure is drawn in the caller's process (where a drawing
+   that fails raises its own exception).
+2. Helpers that have not drawn a batch within ``PATIENCE`` of the caller asking for it
+   (stuck, or a fork server that does not answer): they are killed, one line on stderr says
+   so, and the figures left are drawn in the caller's process.
 3. The command ends, however (return, exception, any signal, SIGKILL included): a helper,
    drawing or not, reads the end of a pipe that only the command holds open, and exits. The
    block's end closes it too, and kills a helper that has not left within ``GOODBYE``.
+
+A fork server killed from outside is started again by ``multiprocessing`` at the next
+helper's start, from a handing-over thread: without the block's signal dispositions, so a
+Ctrl-C during its imports prints its traceback.
 """
 
 from __future__ import annotations
@@ -46,17 +52,15 @@ STOP_SIGNALS = {signal.SIGINT, signal.SIGTERM}
 HELPERS = min(2, os.cpu_count() or 1)  # processes that draw (the caller waits meanwhile)
 HELPER_NICENESS = 5  # added to the helpers' niceness: the run they wait for comes first
 PNG_COMPRESSION = 1  # zlib level of the PNGs: level 6 (the default) takes 20% of the drawing
-PATIENCE = 120.0  # [s] the longest a helper may take over one drawing (a figure takes ~0.5 s)
+PATIENCE = 120.0  # [s] the longest the caller waits for the helpers (a figure takes ~0.5 s)
 GOODBYE = 1.0  # [s] the longest the block's end waits for a helper to leave before a kill
 PRELOAD = f"{__package__}.helper_imports"  # the fork server imports it before it forks
 COMMAND_VARIABLE = "JOINTWEAR_FIGURES_FOR"  # the fork server's command (helper_imports)
 HANDOVER = "figure handover"  # the name of the threads that hand drawings to the helpers
 
-Answer = bytes | BaseException  # a PNG, or what the drawing raised
-
 
 class _Helper:
-    """One helper process and the caller's end of its pipe; started at its first drawing."""
+    """One helper process and the caller's end of its pipes; started at its first drawing."""
 
     def __init__(self, context: multiprocessing.context.BaseContext) -> None:
         self.context = context
@@ -66,27 +70,26 @@ class _Helper:
         self.lifeline: Connection | None = None  # never written: its end tells the helper
         self.failed = False  # could not start, died or was given up: draw here
 
-    def draw(self, message: bytes, deadline: float) -> Answer | None:
-        """Send one pickled (drawing, dpi) and return the answer; None if it was not drawn.
+    def draw(self, message: bytes, patience: float) -> bytes | None:
+        """Send one pickled (drawing, dpi); return the PNG, or None if it was not drawn.
 
-        ``deadline`` as ``time.monotonic()``: a helper that has not answered by then is
-        killed and reported.
+        Called with ``lock`` held. A helper that has not answered within ``patience`` [s]
+        is given up, and said.
         """
         if self.failed or not self._started():
             return None
         assert self.pipe is not None
         try:
             self.pipe.send_bytes(message)
-            if self.pipe.poll(max(0.0, deadline - time.monotonic())):
+            if self.pipe.poll(patience):
                 return pickle.loads(self.pipe.recv_bytes())
-        except (EOFError, OSError, pickle.UnpicklingError):  # it died (killed)
-            self.failed = True
-            return None
-        _say(
-            f"a figure helper did not answer within {PATIENCE:.0f} s; "
-            "drawing the remaining figures in this process"
-        )
-        self.stop(at_once=True)
+            _say(
+                f"a figure helper did not answer within {patience:.0f} s; "
+                "drawing the remaining figures in this process"
+            )
+        except Exception:  # it died, was killed or given up: its pipe is closed or broken
+            pass
+        self.stop(idle=True)
         return None
 
     def _started(self) -> bool:
@@ -102,25 +105,30 @@ class _Helper:
                 theirs.close()
                 lifeline.close()
         except Exception:  # no fork server (killed, gone), no file descriptors, no memory, ...
-            self.failed = True
+            self.stop(idle=True)
             return False
         self.process = process
         return True
 
-    def stop(self, at_once: bool = False) -> None:
-        """Ask the helper to leave; kill it if it has not within ``GOODBYE`` (or at once).
-
-        Called with ``lock`` held, or ``at_once`` (a drawing may be under way).
-        """
+    def let_go(self) -> None:
+        """Tell the helper to leave at once, drawing or not (it exits)."""
         self.failed = True
         if self.lifeline is not None:
-            self.lifeline.close()  # the helper exits, drawing or not
-        if self.pipe is not None and not at_once:
+            self.lifeline.close()
+
+    def stop(self, idle: bool) -> None:
+        """Let go of the helper and wait up to ``GOODBYE`` for it to leave, then kill it.
+
+        ``idle``: with ``lock`` held, so the pipe is closed too; else a thread drawing with
+        the helper closes it when the helper is gone.
+        """
+        self.let_go()
+        if idle and self.pipe is not None:
             self.pipe.close()
         if self.process is not None:
-            self.process.join(0.0 if at_once else GOODBYE)
+            self.process.join(GOODBYE)
             if self.process.is_alive():
-                self.process.kill()  # the thread waiting on its pipe then reads its end
+                self.process.kill()
                 self.process.join(GOODBYE)
 
 
@@ -145,19 +153,32 @@ def drawing_helper(wanted: bool = True) -> Iterator[None]:
         return
     context = multiprocessing.get_context("forkserver")
     context.set_forkserver_preload([PRELOAD])
-    with _signals_ignored_by_children(), _command_known_to_children():
-        multiprocessing.forkserver.ensure_running()  # returns at once; the server imports
+    try:
+        with _signals_ignored_by_children(), _command_known_to_children():
+            multiprocessing.forkserver.ensure_running()  # returns at once; the server imports
+    except Exception:  # no process, no socket (a process limit, no temporary folder): draw here
+        yield
+        return
     helpers = [_Helper(context) for _ in range(HELPERS)]
     _helpers = helpers
     try:
         yield
     finally:
         _helpers = []
+        for helper in helpers:  # all of them leave at once, then each is waited for
+            helper.let_go()
         for helper in helpers:
-            idle = helper.lock.acquire(blocking=False)  # else a drawing is under way: the
-            helper.stop(at_once=not idle)  # block ends early (an exception, an interrupt)
-            if idle:
-                helper.lock.release()
+            _stop(helper)
+
+
+def _stop(helper: _Helper) -> None:
+    """Stop ``helper`` at the block's end; a drawing may still be under way (an interrupt)."""
+    idle = helper.lock.acquire(blocking=False)
+    try:
+        helper.stop(idle)
+    finally:
+        if idle:
+            helper.lock.release()
 
 
 @contextmanager
@@ -208,32 +229,36 @@ def start_pngs(
     Threads hand them over, so the caller goes on at once even while the helpers' fork
     server is still importing (the helpers are forked at their first drawing). The call
     returns each figure as PNG bytes, in the order given. Each drawing reaches a helper
-    pickled; an exception it raises there is raised by the call as it was. A figure no helper
-    drew (none, or as the module docstring says) the call draws itself.
+    pickled. A figure no helper drew (there are none, or as the module docstring says) the
+    call draws itself, and raises what that drawing raises.
     """
     tasks: queue.SimpleQueue[tuple[int, Callable[[], Figure]]] = queue.SimpleQueue()
     for task in enumerate(drawings):
         tasks.put(task)
-    answers: dict[int, Answer] = {}
+    pngs: dict[int, bytes] = {}
+    helpers = list(_helpers)
     threads = [
         threading.Thread(
-            target=_hand_over, args=(helper, tasks, dpi, answers), name=HANDOVER, daemon=True
+            target=_hand_over, args=(helper, tasks, dpi, pngs), name=HANDOVER, daemon=True
         )
-        for helper in _helpers
+        for helper in helpers
     ]
     for thread in threads:
         thread.start()
 
     def wait() -> list[bytes]:
-        for thread in threads:  # each is bounded: PATIENCE per drawing it sent
-            thread.join()
-        images = []
-        for i, draw in enumerate(drawings):
-            answer = answers.get(i)
-            if isinstance(answer, BaseException):
-                raise answer
-            images.append(answer if answer is not None else _png(draw, dpi))
-        return images
+        deadline = time.monotonic() + PATIENCE
+        for thread in threads:
+            thread.join(max(0.0, deadline - time.monotonic()))
+        if any(thread.is_alive() for thread in threads):
+            _say(
+                f"the figure helpers did not finish within {PATIENCE:.0f} s; "
+                "drawing the remaining figures in this process"
+            )
+            for helper in helpers:
+                helper.let_go()  # a thread waiting on a helper then finds it gone
+        drawn = dict(pngs)
+        return [drawn[i] if i in drawn else _png(draw, dpi) for i, draw in enumerate(drawings)]
 
     return wait
 
@@ -242,9 +267,9 @@ def _hand_over(
     helper: _Helper,
     tasks: queue.SimpleQueue[tuple[int, Callable[[], Figure]]],
     dpi: int,
-    answers: dict[int, Answer],
+    pngs: dict[int, bytes],
 ) -> None:
-    """Give ``helper`` drawings from ``tasks`` one at a time, its answers into ``answers``.
+    """Give ``helper`` drawings from ``tasks`` one at a time, its PNGs into ``pngs``.
 
     Stops when the tasks are done or the helper failed; what it leaves is drawn by the caller.
     """
@@ -258,20 +283,22 @@ def _hand_over(
         except Exception:  # any pickling failure: the caller draws it
             continue
         with helper.lock:
-            answer = helper.draw(message, time.monotonic() + PATIENCE)
-        if answer is not None:
-            answers[i] = answer
+            png = helper.draw(message, PATIENCE)
+        if png is not None:
+            pngs[i] = png
 
 
 def _serve(pipe: Connection, lifeline: Connection) -> None:
-    """A helper: draw each (drawing, dpi) that comes through ``pipe``.
+    """A helper: draw each (drawing, dpi) that comes through ``pipe``; answer PNG or None.
 
-    It ends when ``pipe`` or ``lifeline`` ends: the caller closed it, or is gone.
+    None for a drawing that fails here: the caller draws it again, and raises what it
+    raises. The helper ends when ``pipe`` or ``lifeline`` ends: the caller closed it, or is
+    gone.
     """
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C reaches the command; it decides
     signal.signal(signal.SIGTERM, signal.SIG_DFL)  # SIGTERM ends a helper quietly
     os.nice(HELPER_NICENESS)
-    threading.Thread(target=_leave_with, args=(lifeline,), daemon=True).start()
+    threading.Thread(target=_exit_when_closed, args=(lifeline,), daemon=True).start()
     import_module(PRELOAD)  # imported by the fork server already, unless another user of it
     while True:  # started it first
         try:
@@ -279,20 +306,16 @@ def _serve(pipe: Connection, lifeline: Connection) -> None:
         except (EOFError, OSError):  # the caller closed its end or is gone
             return
         try:
-            answer: Answer = _png(*pickle.loads(message))
-        except Exception as error:  # raised again by the caller
-            answer = error
+            png: bytes | None = _png(*pickle.loads(message))
+        except Exception:  # drawn again by the caller, which raises what it raises
+            png = None
         try:
-            reply = pickle.dumps(answer, protocol=pickle.HIGHEST_PROTOCOL)
-        except Exception:  # an exception that does not pickle
-            reply = pickle.dumps(RuntimeError(f"{type(answer).__name__}: {answer}"))
-        try:
-            pipe.send_bytes(reply)
+            pipe.send_bytes(pickle.dumps(png, protocol=pickle.HIGHEST_PROTOCOL))
         except OSError:
             return
 
 
-def _leave_with(lifeline: Connection) -> None:
+def _exit_when_closed(lifeline: Connection) -> None:
     """Wait for the end of ``lifeline`` (never written), then end this process at once."""
     with suppress(EOFError, OSError):
         lifeline.recv_bytes()
