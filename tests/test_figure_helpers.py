@@ -128,7 +128,8 @@ def test_handing_over_returns_before_the_helpers_have_started(monkeypatch):
 
 
 STUCK_COMMAND = """
-import sys, time
+import signal, sys, time
+signal.signal(signal.SIGINT, signal.default_int_handler)  # ignored if run in the background
 sys.path.insert(0, sys.argv[1])
 from test_figure_helpers import _StuckInHelpers
 from jointwear.figures import render

@@ -272,7 +272,11 @@ def _hand_over(
     """Give ``helper`` drawings from ``tasks`` one at a time, its PNGs into ``pngs``.
 
     Stops when the tasks are done or the helper failed; what it leaves is drawn by the caller.
+    Ctrl-C and SIGTERM are blocked here, so they reach the main thread: one delivered to this
+    thread would not wake the caller waiting for it.
     """
+    if hasattr(signal, "pthread_sigmask"):
+        signal.pthread_sigmask(signal.SIG_BLOCK, STOP_SIGNALS)
     while not helper.failed:
         try:
             i, draw = tasks.get_nowait()
