@@ -14,9 +14,9 @@ from typer.testing import CliRunner
 
 import jointwear as jw
 from jointwear.cli import app
+from jointwear.mechanism.system import column_names
 from jointwear.model import parse_model
 from jointwear.results.column_units import column_unit
-from jointwear.system import column_names
 
 G = 9.81  # [m/s^2]
 # The gas force on the slider-crank's piston: harmonic at the crank's 5000 rpm.

@@ -9,7 +9,7 @@ from runs import EXAMPLES
 import jointwear as jw
 from jointwear.model import parse_model
 
-run_module = importlib.import_module("jointwear.run")  # the module, not the function
+run_module = importlib.import_module("jointwear.engine.run_file")  # the module, not the function
 
 FOURBAR = EXAMPLES / "flores2009_fourbar.toml"
 CLEARANCE = {

@@ -2,8 +2,8 @@
 
 from numba import njit
 
+from jointwear.cli.compiling import compile_notice
 from jointwear.cli.progress import CompileNotice
-from jointwear.compiling import compile_notice
 
 
 def test_notice_once_and_counts_each_function():

@@ -15,9 +15,9 @@ from runs import EXAMPLES
 from scipy.integrate import cumulative_simpson, solve_ivp
 
 import jointwear as jw
-from jointwear.assembly import assemble
+from jointwear.mechanism.assembly import assemble
+from jointwear.mechanism.system import build_system
 from jointwear.model import parse_model
-from jointwear.system import build_system
 
 TIGHT = {"rtol": 1e-10, "atol": 1e-12}
 INTEGRATORS = ("dopri5", "abm")

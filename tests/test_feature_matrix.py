@@ -82,7 +82,9 @@ stiffness = "0.5 N*m/rad"
 damping = "0.001 N*m*s/rad"
 """
 
-LOADS = PERIODIC_LOADS + """
+LOADS = (
+    PERIODIC_LOADS
+    + """
 [[forces]]
 type = "point_force"
 body = "rod"
@@ -94,6 +96,7 @@ type = "torque"
 body = "crank"
 torque = { type = "polynomial", coefficients = [0.001, 0.1] }
 """
+)
 
 ANGLE_DRIVERS = {  # the crank's driver as each angle function type
     "harmonic_crank": {"type": "harmonic", "amplitude": "30 deg", "angular_frequency": "5000 rpm"},
@@ -112,7 +115,7 @@ DISTANCE_DRIVERS = {  # the slider's driver (the crank then free) as each distan
 CRANK_UP = (
     ('position = [0.025, 0.0]\nangle = "0 deg"', 'position = [0.0, 0.025]\nangle = "90 deg"'),
     ('position = [0.110, 0.0]\nangle = "0 deg"', 'position = [0.0545, 0.025]\nangle = "-24.6 deg"'),
-    ('position = [0.170, 0.0]', 'position = [0.109, 0.0]'),
+    ("position = [0.170, 0.0]", "position = [0.109, 0.0]"),
 )
 
 
@@ -147,12 +150,14 @@ def _models() -> dict[str, tuple[str, float]]:
     for base in ("slider_crank", "slider_crank_clearance", "slider_crank_piston_clearance"):
         models[f"{base}+loads"] = (_variant(base, LOADS), 0.006)
     models["slider_crank_clearance+periodic_loads"] = (
-        _variant("slider_crank_clearance", PERIODIC_LOADS), 0.006
+        _variant("slider_crank_clearance", PERIODIC_LOADS),
+        0.006,
     )
     for name, function in ANGLE_DRIVERS.items():
         driver = {"name": "motor", "type": "angle", "body": "crank", "function": function}
         models[f"slider_crank_clearance+{name}"] = (
-            _variant("slider_crank_clearance", PERIODIC_LOADS, driver), 0.006
+            _variant("slider_crank_clearance", PERIODIC_LOADS, driver),
+            0.006,
         )
     for name, function in DISTANCE_DRIVERS.items():
         driver = {"name": "pusher", "type": "distance", "joint": "slider_guide",

@@ -22,8 +22,7 @@ import pytest
 from typer.testing import CliRunner
 
 import jointwear as jw
-from jointwear import command
-from jointwear.cli import app
+from jointwear.cli import app, command
 from jointwear.io import RECORD
 
 ROOT = Path(__file__).parents[1]
@@ -183,7 +182,7 @@ def test_an_escaped_error_is_one_line_with_exit_70(monkeypatch, capsys):
     def broken(*args, **kwargs):
         raise ValueError("something\nunexpected")
 
-    monkeypatch.setattr("jointwear.system.build_system", broken)
+    monkeypatch.setattr("jointwear.mechanism.system.build_system", broken)
     monkeypatch.delenv(command.DEBUG_VARIABLE, raising=False)
     with pytest.raises(SystemExit) as stop:
         command.main(["check", str(PENDULUM)])
@@ -256,7 +255,7 @@ def test_an_interrupt_lost_in_a_native_callback_is_delivered_again(capsys):
     compiler writing its cache): it calls sys.unraisablehook, and the exception is gone."""
     import ctypes
 
-    from jointwear.interrupts import redeliver_lost_interrupts
+    from jointwear.engine.interrupts import redeliver_lost_interrupts
 
     received = []
     previous_handler = signal.signal(signal.SIGINT, lambda signum, frame: received.append(signum))
@@ -292,7 +291,7 @@ def test_an_interrupt_lost_in_a_native_callback_is_delivered_again(capsys):
 UNCAUGHT_INTERRUPT = """
 import sys
 import jointwear.cli.run_commands as run_commands
-from jointwear.command import main
+from jointwear.cli.command import main
 
 def interrupted(*args, **kwargs):
     raise KeyboardInterrupt
@@ -316,9 +315,9 @@ def test_a_command_that_said_why_it_stopped_is_not_repeated(tmp_path, monkeypatc
     def interrupted(*args, **kwargs):
         raise KeyboardInterrupt
 
-    import jointwear.run  # noqa: F401  (the module, which the package's run function hides)
+    import jointwear.engine.run_file  # noqa: F401  (the module, loaded)
 
-    monkeypatch.setattr(sys.modules["jointwear.run"], "load_model", interrupted)
+    monkeypatch.setattr(sys.modules["jointwear.engine.run_file"], "load_model", interrupted)
     monkeypatch.setattr("os._exit", lambda code: (_ for _ in ()).throw(SystemExit(code)))
     with pytest.raises(SystemExit) as stop:
         command.main(["run", str(PENDULUM), "--out", str(tmp_path / "out")])

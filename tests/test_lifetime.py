@@ -26,8 +26,8 @@ from typer.testing import CliRunner
 
 import jointwear as jw
 from jointwear.cli import app
+from jointwear.engine.simulate import simulate
 from jointwear.io import append, write_text
-from jointwear.simulate import simulate
 from jointwear.studies.life import files as lifetime_files
 from jointwear.studies.life import update as lifetime_update
 from jointwear.studies.life.records import clearance_growth

@@ -11,9 +11,9 @@ import pytest
 from runs import EXAMPLES, FOURBAR_COLUMNS
 
 import jointwear as jw
+from jointwear.engine.status import status_message
 from jointwear.io import RECORD
 from jointwear.kernels.codes import Status
-from jointwear.status import status_message
 
 FILES = ("summary.json", "model.json", "timeseries.csv", "timeseries.parquet", "events.csv")
 CLEARANCE_FILES = ("wear.csv", "wear_snapshots.csv", "impacts.csv", "cycles.csv")

@@ -16,7 +16,7 @@ from typer.testing import CliRunner
 
 import jointwear as jw
 from jointwear.cli import app
-from jointwear.finite import json_safe
+from jointwear.engine.finite import json_safe
 from jointwear.results.column_units import column_unit
 from jointwear.results.export import matlab_names
 from jointwear.results.run_results import TABLES

@@ -9,7 +9,9 @@ from runs import EXAMPLES
 
 import jointwear as jw
 
-simulate_module = importlib.import_module("jointwear.simulate")  # the module, not the function
+simulate_module = importlib.import_module(
+    "jointwear.engine.simulate"
+)  # the module, not the function
 
 
 @pytest.mark.parametrize("integrator", ["dopri5", "abm"])

@@ -6,7 +6,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from jointwear.kernels.linalg import envelope_factor, envelope_solve
-from jointwear.pattern import ENTRIES, build_pattern
+from jointwear.mechanism.pattern import ENTRIES, build_pattern
 
 
 def _envelope(dense: np.ndarray, first: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

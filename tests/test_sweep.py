@@ -281,7 +281,7 @@ def test_a_failing_case_is_reported_and_the_others_finish(tmp_path):
 
 
 def test_an_exception_in_a_case_is_recorded_with_its_message(tmp_path, monkeypatch):
-    run_module = importlib.import_module("jointwear.run")
+    run_module = importlib.import_module("jointwear.engine.run_file")
     real_run = run_module.run
 
     def failing_abm(model_path, out, *, overrides, **options):

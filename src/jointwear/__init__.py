@@ -7,19 +7,17 @@ systems", Mechanism and Machine Theory 44 (2009) 1211-1222.
 numba, ...) the first time it is used (PEP 562).
 """
 
-import sys
 from importlib import import_module
-from types import ModuleType
 from typing import TYPE_CHECKING
 
 from ._version import __version__
 
 if TYPE_CHECKING:
     from .citations import citations_for, print_citations
+    from .engine.run_file import run
+    from .engine.simulate import simulate
     from .model import Model, ModelError, load_model, parse_model
     from .results import Results, load_results
-    from .run import run
-    from .simulate import simulate
     from .studies.life.study import LifeResults, life
     from .studies.sweep.study import sweep
 
@@ -34,8 +32,8 @@ _PUBLIC = {  # public name -> the module that defines it
     "load_results": ".results",
     "parse_model": ".model",
     "print_citations": ".citations",
-    "run": ".run",
-    "simulate": ".simulate",
+    "run": ".engine.run_file",
+    "simulate": ".engine.simulate",
     "sweep": ".studies.sweep.study",
 }
 
@@ -68,19 +66,3 @@ def __getattr__(name: str) -> object:
 
 def __dir__() -> list[str]:
     return sorted({*globals(), *_PUBLIC})
-
-
-class _Package(ModuleType):
-    """The package module, keeping ``run`` and ``simulate`` the functions of those names.
-
-    Importing the submodule ``jointwear.run`` sets the package's attribute ``run`` to that
-    module, which would hide the function; the functions are the public names.
-    """
-
-    def __setattr__(self, name: str, value: object) -> None:
-        if name in _PUBLIC and isinstance(value, ModuleType):
-            return
-        super().__setattr__(name, value)
-
-
-sys.modules[__name__].__class__ = _Package

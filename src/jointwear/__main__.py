@@ -1,5 +1,5 @@
 """``python -m jointwear`` runs the command-line interface."""
 
-from .command import main
+from .cli.command import main
 
 main()

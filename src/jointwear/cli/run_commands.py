@@ -74,9 +74,9 @@ def _run(
     ideal: bool,
 ) -> Results:
     """The run of ``run``, with its compile notice and progress bar."""
-    from ..compiling import compile_notice
+    from ..engine.run_file import run as run_model
     from ..model import ModelError
-    from ..run import run as run_model
+    from .compiling import compile_notice
 
     bar = ProgressBar(
         "simulating", "t = {task.completed:.4g} / {task.total:.4g} s", PROGRESS_AFTER_S
@@ -103,7 +103,7 @@ def _run(
 
 def _report(results: Results, out_dir: Path) -> None:
     """The console lines of ``run``; the exit code of a run that stopped early."""
-    from ..status import SUCCESS
+    from ..engine.status import SUCCESS
 
     stats = results.summary["stats"]
     out.print(
@@ -210,10 +210,10 @@ def check(model: ModelPath, overrides: Overrides = None) -> None:
     for each clearance joint the radial clearance, the contact stiffness K and the Hertz
     parameters follow.
     """
-    from ..assembly import assemble  # the model schema and one compiled kernel, no pandas
-    from ..lockup import find_lock_up, lock_up_span
+    from ..mechanism.assembly import assemble  # the model schema and one compiled kernel, no pandas
+    from ..mechanism.lockup import find_lock_up, lock_up_span
+    from ..mechanism.system import build_system, freed_degrees_of_freedom, sliders_outside_guides
     from ..model import ModelError, load_model
-    from ..system import build_system, freed_degrees_of_freedom, sliders_outside_guides
 
     try:
         parsed = load_model(model, overrides or [])

@@ -54,8 +54,8 @@ def sweep(
     OUT gets cases/<case>/ (a results folder per case), sweep.csv and sweep.parquet (one row
     per case) and figures/. Running the same sweep again skips the cases already finished.
     """
+    from ..engine.status import SUCCESS
     from ..model import ModelError
-    from ..status import SUCCESS
     from ..studies.sweep.cases import make_plan
     from ..studies.sweep.study import sweep as run_sweep
 
@@ -176,10 +176,10 @@ def life(
     profile by at most --max-change), updates the joint geometry and repeats. OUT gets
     life.csv (one row per update), profiles.csv, summary.json and figures/.
     """
-    from ..compiling import compile_notice
+    from ..engine.status import SUCCESS
     from ..model import ModelError
-    from ..status import SUCCESS
     from ..studies.life.study import life as run_life
+    from .compiling import compile_notice
 
     bar = ProgressBar("wearing", "{task.completed:,} / {task.total:,} cycles")
     compiling = CompileNotice()

@@ -14,8 +14,8 @@ Units are written as UDUNITS (netCDF's ``units`` attribute) reads them: ``m``, `
 
 from __future__ import annotations
 
+from ..mechanism.system import load_columns
 from ..model import Model
-from ..system import load_columns
 
 TEXT = ""  # a column of names (joint, surface, event, ...)
 UNKNOWN = "?"

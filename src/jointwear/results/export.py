@@ -25,7 +25,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 import pandas as pd
 
-from ..finite import json_safe
+from ..engine.finite import json_safe
 from ..io import write_atomic
 from .column_units import TEXT
 

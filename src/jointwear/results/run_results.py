@@ -24,7 +24,7 @@ import pandas as pd
 import pyarrow as pa
 from pyarrow import csv
 
-from ..finite import json_safe
+from ..engine.finite import json_safe
 from ..io import make_folder, remove, write_atomic, write_text
 from ..model import Model, parse_model
 from .run_state import RunState

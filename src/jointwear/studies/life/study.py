@@ -45,10 +45,10 @@ from pathlib import Path
 
 import pandas as pd
 
-from ...interrupts import stop_requests
+from ...engine.interrupts import stop_requests
+from ...engine.status import FAILED, INTERRUPTED, SUCCESS
 from ...model import Model, ModelError, load_model
 from ...results.run_state import RunState
-from ...status import FAILED, INTERRUPTED, SUCCESS
 from . import files
 from .band import BAND, band_summary, band_table, folder_name, run_band
 from .band import FOLDER as BAND_FOLDER

@@ -13,12 +13,12 @@ from pathlib import Path
 import numpy as np
 from numpy.typing import NDArray
 
+from ...engine.simulate import simulate
+from ...engine.status import CLEARANCE_LIMIT, FAILED, INTERRUPTED, SUCCESS, WORN_THROUGH
 from ...model import Model
 from ...results import Results
 from ...results.clearance import UM
 from ...results.run_state import RunState
-from ...simulate import simulate
-from ...status import CLEARANCE_LIMIT, FAILED, INTERRUPTED, SUCCESS, WORN_THROUGH
 from . import files
 from .records import (
     clearance_growths,

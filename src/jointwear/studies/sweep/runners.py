@@ -24,9 +24,9 @@ from dataclasses import dataclass
 from importlib import import_module
 from pathlib import Path
 
+from ...engine.status import ERROR, INTERRUPTED, SUCCESS
 from ...io import make_folder, remove, write_text
 from ...model.errors import ModelError
-from ...status import ERROR, INTERRUPTED, SUCCESS
 
 CASE_FILE = "case.json"  # in each case folder: its settings and outcome, written last
 POLL_S = 0.3  # how often a runner looks at the stop flag while cases run [s]
@@ -35,7 +35,9 @@ DASK_MISSING = (
     "--scheduler {address}: sweeps on a cluster need Dask distributed, which is not "
     "installed: pip install 'jointwear[dask]'"
 )
-WORKER_MODULE = "jointwear.run"  # what a case imports (simulate, the kernels): before workers start
+WORKER_MODULE = (
+    "jointwear.engine.run_file"  # what a case imports (simulate, the kernels): before workers start
+)
 
 
 @dataclass(frozen=True)
@@ -107,7 +109,7 @@ def run_case(task: CaseTask) -> Outcome:
 
 def _simulate(task: CaseTask) -> dict:
     if task.cycles is None:
-        from ...run import run
+        from ...engine.run_file import run
 
         results = run(
             task.model_path, task.folder, overrides=task.overrides, figures=False, ideal=False

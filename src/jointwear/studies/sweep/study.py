@@ -27,11 +27,11 @@ from pathlib import Path
 
 import pandas as pd
 
-from ...interrupts import stop_requests
+from ...engine.interrupts import stop_requests
+from ...engine.status import NOT_RUN, SUCCESS
 from ...io import check_folder, claim, make_folder, write_atomic, write_text
 from ...model import Model, ModelError, load_model
 from ...model.files import SAVED_MODEL
-from ...status import NOT_RUN, SUCCESS
 from ..life.settings import MAX_CYCLES
 from .cases import Case, check_link, check_vary, make_cases, si_value, value_text
 from .runners import CaseTask, Outcome, read_record, run_dask, run_local, run_serial

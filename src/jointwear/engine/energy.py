@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .model import Model
+from ..model import Model
 
 ENERGY_FLOOR = 1e-12  # energy scale below which changes are not judged [J]
 ROUNDING = 1e3 * np.finfo(float).eps  # of the energies' magnitude: changes by rounding [-]

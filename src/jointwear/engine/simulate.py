@@ -15,48 +15,48 @@ from typing import NamedTuple
 import numpy as np
 import pandas as pd
 
-from ._version import __version__
-from .assembly import assemble, redundant_equations
-from .energy import EnergyMonitor
-from .finite import first_non_finite
-from .interrupts import interruptible, stop_requests
-from .kernels import loop
-from .kernels.codes import N_COUNTERS, Counter, Formulation, Method, Status
-from .kernels.dynamics import Problem, make_dynamics_scratch
-from .kernels.elements import ElementLog, Elements, ElementScratch, ElementState, journal, slider
-from .kernels.integrate.abm import make_abm_state
-from .kernels.integrate.rk import DOPRI5, S_T, make_rk_state
-from .kernels.structs import StructProxy, to_struct
-from .lockup import find_lock_up, lock_up_span
-from .model import Model, ModelError
-from .model.sections import FORMULATIONS
-from .provenance import provenance
-from .results import Results
-from .results import slider as slider_results
-from .results.clearance import (
-    impact_columns,
-    impact_rows,
-    joint_summaries,
-    snapshot_table,
-    wear_table,
-)
-from .results.cycles import (
-    JOURNAL_PEAKS,
-    SLIDER_PEAKS,
-    CycleWindows,
-    lead_with_steady_state,
-    settling,
-)
-from .results.run_state import RunState
-from .results.tribology import with_tribology
-from .status import status_message
-from .system import (
+from .._version import __version__
+from ..kernels import loop
+from ..kernels.codes import N_COUNTERS, Counter, Formulation, Method, Status
+from ..kernels.dynamics import Problem, make_dynamics_scratch
+from ..kernels.elements import ElementLog, Elements, ElementScratch, ElementState, journal, slider
+from ..kernels.integrate.abm import make_abm_state
+from ..kernels.integrate.rk import DOPRI5, S_T, make_rk_state
+from ..kernels.structs import StructProxy, to_struct
+from ..mechanism.assembly import assemble, redundant_equations
+from ..mechanism.lockup import find_lock_up, lock_up_span
+from ..mechanism.system import (
     System,
     build_system,
     column_names,
     freed_degrees_of_freedom,
     sliders_outside_guides,
 )
+from ..model import Model, ModelError
+from ..model.sections import FORMULATIONS
+from ..results import Results
+from ..results import slider as slider_results
+from ..results.clearance import (
+    impact_columns,
+    impact_rows,
+    joint_summaries,
+    snapshot_table,
+    wear_table,
+)
+from ..results.cycles import (
+    JOURNAL_PEAKS,
+    SLIDER_PEAKS,
+    CycleWindows,
+    lead_with_steady_state,
+    settling,
+)
+from ..results.run_state import RunState
+from ..results.tribology import with_tribology
+from .energy import EnergyMonitor
+from .finite import first_non_finite
+from .interrupts import interruptible, stop_requests
+from .provenance import provenance
+from .status import status_message
 
 CHUNK_WALL_S = 0.2  # target wall time of one compiled chunk [s]
 # A run that reaches its lock-up time, or fails past this share of it, ends ``lock_up``.

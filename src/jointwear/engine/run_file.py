@@ -7,12 +7,12 @@ import tempfile
 from collections.abc import Sequence
 from pathlib import Path
 
+from ..io import check_folder, claim, remove, remove_folder
+from ..model import load_model
+from ..results import IDEAL_FOLDER, Results
+from ..results.run_results import CLEARANCE_FILES
+from ..results.run_results import FILES as RESULT_FILES
 from .interrupts import stop_requests
-from .io import check_folder, claim, remove, remove_folder
-from .model import load_model
-from .results import IDEAL_FOLDER, Results
-from .results.run_results import CLEARANCE_FILES
-from .results.run_results import FILES as RESULT_FILES
 from .simulate import Progress, simulate
 from .status import INTERRUPTED, SUCCESS
 
@@ -71,7 +71,7 @@ def run(
         results = simulate(model, progress=progress)
         drawing = None
         if figures and len(results.timeseries) > 1:
-            from .figures.folder import FigureDrawing
+            from ..figures.folder import FigureDrawing
 
             drawing = FigureDrawing(results)  # the helpers draw while the rest goes on
         companion = None
@@ -97,7 +97,7 @@ def run(
             _save(results, companion, rescue)
             return results
         if drawing is not None:
-            from .figures.names import ANIMATION
+            from ..figures.names import ANIMATION
 
             try:
                 drawing.save(folder / FIGURES, ideal=companion, animation=animation)
@@ -121,7 +121,7 @@ def _save(results: Results, companion: Results | None, folder: Path) -> None:
 
 def _files(clearance: bool, figures: bool, ideal: bool) -> list[str]:
     """Every file a run may write in its folder, relative to it."""
-    from .figures.names import ALL_FIGURES
+    from ..figures.names import ALL_FIGURES
 
     tables = RESULT_FILES if clearance else RESULT_FILES[: -len(CLEARANCE_FILES)]
     names = [*tables, f"{IDEAL_FOLDER}/"]

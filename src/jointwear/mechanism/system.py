@@ -12,14 +12,14 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import NDArray
 
-from .kernels.codes import DriverKind, EventDirection, FunctionKind
-from .kernels.elements import journal as jc
-from .kernels.elements import slider as sc
-from .kernels.loop import UserEvents
-from .model import Model
-from .model.clearance import WEAR_DISTRIBUTIONS, Clearance, law_parameters
-from .model.sections import Load
-from .model.slide_clearance import SlideClearance
+from ..kernels.codes import DriverKind, EventDirection, FunctionKind
+from ..kernels.elements import journal as jc
+from ..kernels.elements import slider as sc
+from ..kernels.loop import UserEvents
+from ..model import Model
+from ..model.clearance import WEAR_DISTRIBUTIONS, Clearance, law_parameters
+from ..model.sections import Load
+from ..model.slide_clearance import SlideClearance
 from .pattern import build_pattern
 
 GROUND = -1

@@ -18,7 +18,7 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import NDArray
 
-from .kernels.jacobian import ENTRIES  # per row: (x, y, phi) of its first body, then second
+from ..kernels.jacobian import ENTRIES  # per row: (x, y, phi) of its first body, then second
 
 
 class Pattern(NamedTuple):

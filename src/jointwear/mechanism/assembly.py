@@ -14,9 +14,9 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from .kernels.constraints import evaluate_constraints
-from .kernels.structs import to_struct
-from .model import Model, ModelError
+from ..kernels.constraints import evaluate_constraints
+from ..kernels.structs import to_struct
+from ..model import Model, ModelError
 from .pattern import ENTRIES
 from .system import System, constraint_count, initial_guess
 

@@ -8,7 +8,7 @@ import sys
 from datetime import UTC, datetime
 from importlib.metadata import PackageNotFoundError, version
 
-from ._version import __version__
+from .._version import __version__
 
 DEPENDENCIES = ("numpy", "numba", "llvmlite", "pandas", "pyarrow", "pydantic", "pint")
 

@@ -16,9 +16,9 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
+from ..model import Model
+from ..model.functions import period
 from .assembly import Assembly, evaluate
-from .model import Model
-from .model.functions import period
 from .system import System
 
 SAMPLES_PER_CYCLE = 360  # poses solved per driver cycle (a degree of a crank's turn)

@@ -25,7 +25,7 @@ def _interrupt(signum: int, frame: object) -> None:
 
 def main(argv: list[str] | None = None) -> None:
     """Run the command line ``argv`` (default ``sys.argv[1:]``) and exit with its code."""
-    from .interrupts import cut_short, redeliver_lost_interrupts
+    from ..engine.interrupts import cut_short, redeliver_lost_interrupts
 
     signal.signal(signal.SIGTERM, _interrupt)
     redeliver_lost_interrupts()
@@ -52,7 +52,7 @@ def _flush() -> None:
 
 
 def _run(argv: list[str] | None) -> int:
-    from .cli import app  # inside main's try: a Ctrl-C during these imports is an interrupt
+    from . import app  # inside main's try: a Ctrl-C during these imports is an interrupt
 
     try:  # typer handles usage errors (exit 2), typer.Exit and Ctrl-C (exit 130) itself
         app(args=argv, prog_name="jointwear")

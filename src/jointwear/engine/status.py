@@ -8,7 +8,7 @@ a sweep case adds ``error`` and ``not_run``, a life run ``failed``, ``worn_throu
 ``clearance_limit``. Everything but ``success`` means the work did not get to its end.
 """
 
-from .kernels.codes import Status
+from ..kernels.codes import Status
 
 __all__ = [
     "CLEARANCE_LIMIT",
