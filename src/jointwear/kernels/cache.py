@@ -12,10 +12,16 @@ is the one this was written and tested against.
 Loading a kernel from this cache also skips numba's refresh of its whole target context
 (``load_kernel``): up to half a second of every process that runs a kernel (0.55 s for the
 four-bar; less where a kernel's environment imports some of numba's modules back).
+
+An index that no longer unpickles (it names a type of the kernels' arguments in a module
+that has moved since, outside ``kernels/``, so the stamp did not change) is a miss: it is
+removed, and the kernel compiles and is saved again.
 """
 
+import contextlib
 import hashlib
 import os
+import pickle
 from typing import Any
 
 import numba
@@ -86,7 +92,15 @@ def load_kernel(cache: caching.Cache, signature: Any, target_context: Any) -> An
         return _numba_load(cache, signature, target_context)
     rtsys.initialize(target_context)
     with cache._guard_against_spurious_io_errors():
-        return cache._load_overload(signature, target_context)
+        try:
+            return cache._load_overload(signature, target_context)
+        except STALE_INDEX:
+            with contextlib.suppress(OSError):
+                os.remove(cache._cache_file._index_path)
+            return None
+
+
+STALE_INDEX = (ImportError, AttributeError, pickle.UnpicklingError, EOFError)
 
 
 def install() -> None:
