@@ -69,7 +69,7 @@ def test_flores_2009_comes_first_for_every_example(path):
 
 def test_the_lubricated_example_cites_the_bearing_model():
     model = jw.load_model(LUBRICATED)
-    assert model.clearance_joints[0].clearance.lubrication == "short_bearing"
+    assert model.joints_of("revolute")[0].clearance.lubrication == "short_bearing"
     keys = citation_keys(model)
     assert "flores2009lubricated" in keys and "pinkus1961" in keys
     assert "flores2009lubricated" not in citation_keys(jw.load_model(FOURBAR))
@@ -78,7 +78,7 @@ def test_the_lubricated_example_cites_the_bearing_model():
 def test_the_citations_follow_the_chosen_laws_and_solver():
     # model_copy skips validation: Reye's law would need shear_strength, not wear_coefficient
     base = jw.load_model(FOURBAR)
-    joint = base.clearance_joints[0]
+    joint = base.joints_of("revolute")[0]
     clearance = joint.clearance.model_copy(
         update={"normal_law": "liu", "damping": "hunt_crossley", "friction_law": "stick_slip",
                 "wear_law": "reye"}

@@ -9,9 +9,7 @@ from runs import EXAMPLES
 
 import jointwear as jw
 
-simulate_module = importlib.import_module(
-    "jointwear.engine.simulate"
-)  # the module, not the function
+drive_module = importlib.import_module("jointwear.engine.drive")  # the chunking's settings
 
 
 @pytest.mark.parametrize("integrator", ["dopri5", "abm"])
@@ -25,8 +23,8 @@ def test_result_does_not_depend_on_chunking(monkeypatch, integrator):
         ],
     )  # the example's clearance joint: contact onsets cut steps, wear accumulates per step
     one_go = jw.simulate(model)
-    monkeypatch.setattr(simulate_module, "CHUNK_WALL_S", 1e-9)  # a chunk per step or so
-    monkeypatch.setattr(simulate_module, "MIN_CHUNK_STEPS", 1)
+    monkeypatch.setattr(drive_module, "CHUNK_WALL_S", 1e-9)  # a chunk per step or so
+    monkeypatch.setattr(drive_module, "MIN_CHUNK_STEPS", 1)
     many = jw.simulate(model)
     assert one_go.summary["stats"]["accepted_steps"] == many.summary["stats"]["accepted_steps"]
     # Bit-identical: the chunk ends never shorten a step.

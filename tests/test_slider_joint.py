@@ -523,8 +523,8 @@ def test_both_kinds_in_one_model_share_the_tables_and_restart():
     assert set(first.impacts["joint"]) == {"rod_slider", "slider_guide"}
     second = jw.simulate(model, initial=first.final)
     assert second.status == "success", second.message
-    assert (second.final.slider_wear >= first.final.slider_wear).all()
-    added = second.final.slider_wear.sum() - first.final.slider_wear.sum()
+    assert (second.final.wear["translational"] >= first.final.wear["translational"]).all()
+    added = second.final.wear["translational"].sum() - first.final.wear["translational"].sum()
     mapped = (
         second.wear[second.wear["joint"] == "slider_guide"]["depth_m"].sum()
         - first.wear[first.wear["joint"] == "slider_guide"]["depth_m"].sum()

@@ -188,14 +188,14 @@ def citation_keys(model: Model) -> list[str]:
         *FORMULATION_CITATIONS[model.solver.formulation],
         *INTEGRATOR_CITATIONS[model.solver.integrator],
     ]
-    for joint in model.clearance_joints:
+    for joint in model.joints_of("revolute"):
         clearance = joint.clearance
         keys += _law_keys(clearance, ("normal_law", "damping"))
         if clearance.normal_law == "hertz" and clearance.contact_stiffness is None:
             keys += INTERNAL_CYLINDER_STIFFNESS
         keys += _law_keys(clearance, ("friction_law", "wear_law", "wear_distribution"))
         keys += _law_keys(clearance, ("lubrication",))
-    for joint in model.slider_joints:
+    for joint in model.joints_of("translational"):
         keys += TRANSLATIONAL_CLEARANCE
         keys += _law_keys(joint.clearance, ("normal_law", "damping", "friction_law", "wear_law"))
     return list(dict.fromkeys(keys))

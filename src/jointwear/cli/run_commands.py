@@ -210,21 +210,16 @@ def check(model: ModelPath, overrides: Overrides = None) -> None:
     for each clearance joint the radial clearance, the contact stiffness K and the Hertz
     parameters follow.
     """
-    from ..mechanism.assembly import assemble  # the model schema and one compiled kernel, no pandas
-    from ..mechanism.lockup import find_lock_up, lock_up_span
-    from ..mechanism.system import build_system, freed_degrees_of_freedom, sliders_outside_guides
+    from ..engine.prepare import prepare  # the model schema and the kernels, no pandas
+    from ..mechanism.system import freed_degrees_of_freedom
     from ..model import ModelError, load_model
 
     try:
         parsed = load_model(model, overrides or [])
-        ideal = build_system(parsed, ideal=True)
-        assembly = assemble(parsed, ideal)
-        outside = sliders_outside_guides(parsed, assembly.y0)
-        if outside:
-            raise ModelError(outside)
-        lock = find_lock_up(parsed, ideal, assembly, lock_up_span(parsed))
-        if lock is not None:
-            raise ModelError([f"drivers: {lock.message()}"])
+        ready = prepare(parsed)
+        assembly = ready.assembly
+        if ready.lock is not None:
+            raise ModelError([f"drivers: {ready.lock.message()}"])
     except ModelError as error:
         raise fail(error) from None
     out.print(f"model '{one_line(parsed.name)}': valid", **PLAIN)
@@ -251,9 +246,9 @@ def check(model: ModelPath, overrides: Overrides = None) -> None:
         vx, vy, w = assembly.y0[n + 3 * i : n + 3 * i + 3]
         table.add_row(body.name, *(number(v) for v in (x, y, math.degrees(phi), vx, vy, w)))
     print_table(keep_whole(table, *range(1, 7)))
-    for joint in parsed.clearance_joints:
+    for joint in parsed.joints_of("revolute"):
         print_table(_clearance_table(joint.name, joint.clearance))
-    for joint in parsed.slider_joints:
+    for joint in parsed.joints_of("translational"):
         print_table(_slider_table(parsed, joint, assembly.y0))
 
 

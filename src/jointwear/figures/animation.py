@@ -123,8 +123,8 @@ def _scale(model: Model, rows: pd.DataFrame, clearance_scale: float | None) -> f
     """
     if clearance_scale is not None:
         return clearance_scale
-    gaps = [j.clearance.radial_clearance for j in model.clearance_joints]
-    gaps += [j.clearance.clearance_gap for j in model.slider_joints]
+    gaps = [j.clearance.radial_clearance for j in model.joints_of("revolute")]
+    gaps += [j.clearance.clearance_gap for j in model.joints_of("translational")]
     if not gaps:
         return 1.0
     return CLEARANCE_SHARE * _size(_outlines(model, rows, {})) / max(gaps)
@@ -264,7 +264,7 @@ def _positions(
     body's outline goes through it. Sliders: ``_slider_pose``.
     """
     model = results.model
-    joints = model.clearance_joints
+    joints = model.joints_of("revolute")
     scale = _scale(model, rows, clearance_scale)
     bearings = {j.name: _track(model, rows, j.bodies[0], j.points[0]) for j in joints}
     journals = {
@@ -272,7 +272,7 @@ def _positions(
         for j in joints
     }
     sliders, moved = {}, {}
-    for joint in model.slider_joints:
+    for joint in model.joints_of("translational"):
         sliders[joint.name], points = _slider_pose(model, rows, joint, scale)
         moved |= points
     ideal = [j for j in model.joints if isinstance(j, TranslationalJoint) and j.clearance is None]
@@ -355,8 +355,8 @@ def mechanism_scene(
             f"clearance joints: journal offset × {scale:.3g} "
             f"(c = {c_mm:.3g} mm drawn as {c_mm * scale:.3g} mm)"
         )
-    if model.slider_joints:
-        gap_mm = max(j.clearance.clearance_gap for j in model.slider_joints) * 1e3
+    if model.joints_of("translational"):
+        gap_mm = max(j.clearance.clearance_gap for j in model.joints_of("translational")) * 1e3
         titles.append(
             f"sliders: gap, offset and tilt × {scale:.3g} "
             f"(gap {gap_mm:.3g} mm drawn as {gap_mm * scale:.3g} mm)"

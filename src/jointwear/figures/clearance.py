@@ -45,7 +45,7 @@ def _require_joints(results: Results) -> tuple[RevoluteJoint, ...]:
 
     Translational ones have figures of their own (slider.py).
     """
-    joints = results.model.clearance_joints
+    joints = results.model.joints_of("revolute")
     if not joints:
         raise ValueError(f"model '{results.model.name}' has no revolute clearance joints")
     return joints
@@ -100,7 +100,7 @@ def _dynamics_panels(results: Results) -> list[tuple[str, str, str]]:
     """
     body = results.model.bodies[-1].name
     phi = results.timeseries[f"phi_{body}"]
-    slides = any(joint.bodies[1] == body for joint in results.model.slider_joints)
+    slides = any(joint.bodies[1] == body for joint in results.model.joints_of("translational"))
     if phi.max() - phi.min() >= STILL_ANGLE and not slides:
         panels = [
             (f"omega_{body}", f"{body} angular velocity", "angular velocity [rad/s]"),

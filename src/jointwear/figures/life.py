@@ -44,9 +44,11 @@ def plot_life_wear(
     depth, force, torque = fig.subplots(3, 1, sharex=True)
     cycles = table["cycles"].to_numpy()
     lengths = [c for c in table if c.endswith(LENGTH_COLUMNS)]
-    marks_m = [GROWTH_MARK * joint.clearance.radial_clearance for joint in model.clearance_joints]
+    marks_m = [
+        GROWTH_MARK * joint.clearance.radial_clearance for joint in model.joints_of("revolute")
+    ]
     unit, per_m = length_unit([*table[lengths].to_numpy().ravel(), *marks_m])
-    for joint in model.clearance_joints:
+    for joint in model.joints_of("revolute"):
         name = joint.name
         for surface, style in zip(PLOT_ORDER, ("-", "--"), strict=True):
             values = table[f"{name}.max_wear_depth_{surface}_m"] * per_m
@@ -105,7 +107,7 @@ def profile_updates(table: pd.DataFrame) -> list[int]:
 
 def plot_life_profiles(model: Model, table: pd.DataFrame, profiles: pd.DataFrame) -> Figure:
     """Wear depth per sector of both surfaces, polar, at a few cycle counts."""
-    joints = model.clearance_joints
+    joints = model.joints_of("revolute")
     unit, per_m = length_unit(profiles["depth_m"])
     updates = profile_updates(table)
     colours = colormaps["viridis"](np.linspace(0.0, 0.9, len(updates)))

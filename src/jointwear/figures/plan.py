@@ -68,7 +68,7 @@ def clearance_drawings(results: Results, ideal: Results | None = None) -> dict[s
 
     ``ideal``: the same mechanism with ideal joints, for the comparison of Fig. 7 (a)-(c).
     """
-    if not results.model.clearance_joints:
+    if not results.model.joints_of("revolute"):
         return {}
     return {
         name: Drawing("clearance", plot, (results, ideal) if name in WITH_IDEAL else (results,))
@@ -78,7 +78,7 @@ def clearance_drawings(results: Results, ideal: Results | None = None) -> dict[s
 
 def slider_drawings(results: Results) -> dict[str, Drawing]:
     """The slider figures by file name; none without translational clearance joints."""
-    if not results.model.slider_joints:
+    if not results.model.joints_of("translational"):
         return {}
     return {
         name: Drawing("slider", plot, (results,))

@@ -94,7 +94,7 @@ def _set_abscissa(ax: Axes, x: Abscissa) -> None:
 
 
 def _joints(results: Results) -> tuple[TranslationalJoint, ...]:
-    joints = results.model.slider_joints
+    joints = results.model.joints_of("translational")
     if not joints:
         raise ValueError(f"model '{results.model.name}' has no translational clearance joints")
     return joints

@@ -86,7 +86,7 @@ class Log(NamedTuple):
     event_index: np.ndarray  # (cap,) int64 event number
     event_rising: np.ndarray  # (cap,) int64 1 rising, 0 falling
     impact_time: np.ndarray  # (cap,) contact onsets logged during this chunk [s]
-    impact_slot: np.ndarray  # (cap,) int64 contact slot
+    impact_owner: np.ndarray  # (cap, 2) int64 the slot's kind and element within the kind
     impact_info: np.ndarray  # (cap, 4) what the element reports of each onset
     elements: elements.ElementLog
 
@@ -120,7 +120,7 @@ def _begin_periods(problem, log, t, y):
         )  # fmt: skip
         if opened and i < log.impact_time.shape[0]:
             log.impact_time[i] = t
-            log.impact_slot[i] = slot
+            log.impact_owner[i, 0], log.impact_owner[i, 1] = elements.owner(problem.elements, slot)
             log.counters[Counter.IMPACTS] = i + 1
 
 
@@ -223,7 +223,7 @@ def _contact_cut(problem, events, integ, scratch, t_old, y_old, t_new, y_new):
     for slot in range(elements.slot_count(problem.elements)):
         tol = elements.tolerance(problem.elements, slot)
         g1 = _excess(problem, slot, y_new)
-        if not elements.in_contact(problem.state, slot):
+        if not elements.in_contact(problem.elements, problem.state, slot):
             if g1 > 0.0:
                 g0 = min(_excess(problem, slot, y_old), 0.0)  # periods open above tol
                 t_hit = _locate(problem, events, integ, scratch, 1, slot, t_old, g0, t_new, g1, tol)

@@ -12,14 +12,11 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import NDArray
 
+from ..joints import BY_NAME, KINDS
 from ..kernels.codes import DriverKind, EventDirection, FunctionKind
-from ..kernels.elements import journal as jc
-from ..kernels.elements import slider as sc
 from ..kernels.loop import UserEvents
 from ..model import Model
-from ..model.clearance import WEAR_DISTRIBUTIONS, Clearance, law_parameters
 from ..model.sections import Load
-from ..model.slide_clearance import SlideClearance
 from .pattern import build_pattern
 
 GROUND = -1
@@ -78,14 +75,18 @@ class Mechanism(NamedTuple):
     row_entry_pairs: NDArray[np.int64]
 
 
+class ElementRows(NamedTuple):
+    """The rows of one kind's contact elements (``kernels.elements.<kind>``: I_*, P_*)."""
+
+    ints: NDArray[np.int64]  # (n, N_INTS)
+    params: NDArray[np.float64]  # (n, N_PARAMS) [SI]
+
+
 class System(NamedTuple):
-    """A model as arrays: the mechanism, the contact elements' tables, the user events."""
+    """A model as arrays: the mechanism, the contact elements' rows, the user events."""
 
     mechanism: Mechanism
-    journal_ints: NDArray[np.int64]  # (nc, journal.N_INTS) revolute clearance joints
-    journal_params: NDArray[np.float64]  # (nc, journal.N_PARAMS)
-    slider_ints: NDArray[np.int64]  # (ns, slider.N_INTS) translational clearance joints
-    slider_params: NDArray[np.float64]  # (ns, slider.N_PARAMS)
+    elements: dict[str, ElementRows]  # per kind (``joints.KINDS``), its joints in file order
     events: UserEvents
 
 
@@ -96,9 +97,7 @@ def constraint_count(mechanism: Mechanism) -> int:
 
 def freed_degrees_of_freedom(model: Model) -> int:
     """Degrees of freedom the clearance joints add to the ideal mechanism's."""
-    return jc.DEGREES_OF_FREEDOM * len(model.clearance_joints) + (
-        sc.DEGREES_OF_FREEDOM * len(model.slider_joints)
-    )
+    return sum(kind.module.DEGREES_OF_FREEDOM * len(kind.joints(model)) for kind in KINDS)
 
 
 def column_names(model: Model) -> list[str]:
@@ -157,13 +156,9 @@ def _columns_around_loads(model: Model) -> tuple[list[str], list[str]]:
     after = []
     for joint in (j for j in model.joints if j.clearance is None):
         after += [f"{joint.name}_fx", f"{joint.name}_fy"]
-    for joint in model.clearance_joints:
-        after += [f"{joint.name}_{c}" for c in jc.OUTPUT_NAMES]
-        if joint.clearance.lubrication != "none":
-            after += [f"{joint.name}_{c}" for c in jc.FILM_OUTPUT_NAMES]
-    for joint in model.slider_joints:
-        finite = joint.clearance.guide_length is not None
-        after += [f"{joint.name}_{c}" for c in sc.output_names(finite)]
+    for kind in KINDS:
+        for joint in kind.joints(model):
+            after += [f"{joint.name}_{c}" for c in kind.columns(joint)]
     after += ["energy_kinetic", "energy_potential"]
     if model.has_clearance:
         after.append("energy_contact")
@@ -211,89 +206,6 @@ def _table(rows: list, shape: tuple[int, ...], dtype: type) -> NDArray:
     return np.array(rows, dtype=dtype).reshape((len(rows), *shape))
 
 
-def _clearance_row(
-    clearance: Clearance, bearing: int, journal: int, centres: list
-) -> tuple[list[int], NDArray[np.float64]]:
-    """The integer and the parameter row of one clearance joint (``kernels.elements.journal``)."""
-    laws = law_parameters(clearance)
-    ints = [0] * jc.N_INTS
-    ints[jc.I_BEARING] = bearing
-    ints[jc.I_JOURNAL] = journal
-    ints[jc.I_NORMAL] = laws["normal"].code
-    ints[jc.I_DAMPING] = laws["damping"].code
-    ints[jc.I_LUBRICATION] = laws["lubrication"].code
-    ints[jc.I_FRICTION] = laws["friction"].code
-    ints[jc.I_WEAR] = laws["wear"].code
-    ints[jc.I_SPREAD] = WEAR_DISTRIBUTIONS[clearance.wear_distribution]
-    ints[jc.I_FEEDBACK] = int(clearance.wear_feedback)
-    ints[jc.I_SECTORS] = clearance.sectors
-    param = np.zeros(jc.N_PARAMS)
-    param[[jc.P_SB_X, jc.P_SB_Y]] = centres[0]
-    param[[jc.P_SJ_X, jc.P_SJ_Y]] = centres[1]
-    param[jc.P_RB] = clearance.bearing_radius
-    param[jc.P_RJ] = clearance.journal_radius
-    param[jc.P_C] = clearance.radial_clearance
-    param[jc.P_K] = clearance.stiffness
-    param[jc.P_EXP] = clearance.exponent
-    (param[jc.P_CE],) = laws["damping"].parameters
-    param[jc.P_CF] = clearance.friction_coefficient
-    param[[jc.P_F0, jc.P_F1, jc.P_F2]] = laws["friction"].parameters
-    param[jc.P_WEAR] = laws["wear"].parameters[0]
-    param[jc.P_SHARE] = clearance.journal_wear_share
-    param[jc.P_WIDTH] = clearance.width
-    param[jc.P_RSTAR] = clearance.relative_radius
-    param[jc.P_ESTAR] = clearance.contact_modulus
-    param[jc.P_MIN_SPEED] = clearance.min_impact_speed
-    param[jc.P_TOL] = clearance.contact_tolerance
-    param[[jc.P_VISCOSITY, jc.P_BREAKDOWN]] = laws["lubrication"].parameters
-    return ints, param
-
-
-def _slider_row(
-    clearance: SlideClearance, guide: int, slider: int, points: list, axis: NDArray, angle0: float
-) -> tuple[list[int], NDArray[np.float64]]:
-    """The integer and the parameter row of one slider (``kernels.elements.slider``).
-
-    ``points`` are the guide's point and the slider's centre in their bodies' frames [m],
-    ``axis`` the guide's unit axis in its body's frame, and ``angle0`` the slider's angle
-    minus the guide's when the slider is level [rad].
-    """
-    laws = law_parameters(clearance)
-    ints = [0] * sc.N_INTS
-    ints[sc.I_GUIDE] = guide
-    ints[sc.I_SLIDER] = slider
-    ints[sc.I_NORMAL] = laws["normal"].code
-    ints[sc.I_DAMPING] = laws["damping"].code
-    ints[sc.I_FRICTION] = laws["friction"].code
-    ints[sc.I_WEAR] = laws["wear"].code
-    ints[sc.I_FEEDBACK] = int(clearance.wear_feedback)
-    ints[sc.I_SEGMENTS] = clearance.segments
-    ints[sc.I_ENDS] = int(clearance.guide_length is not None)
-    c, s = np.cos(angle0), np.sin(angle0)
-    param = np.zeros(sc.N_PARAMS)
-    param[[sc.P_G_X, sc.P_G_Y]] = points[0]
-    param[[sc.P_U_X, sc.P_U_Y]] = axis
-    param[[sc.P_S_X, sc.P_S_Y]] = points[1]
-    param[[sc.P_US_X, sc.P_US_Y]] = (c * axis[0] + s * axis[1], -s * axis[0] + c * axis[1])
-    param[sc.P_A] = 0.5 * clearance.slider_length
-    param[sc.P_B] = 0.5 * clearance.slider_height
-    param[sc.P_H] = clearance.guide_half_height
-    param[sc.P_L] = 0.5 * (clearance.guide_length or 0.0)
-    param[sc.P_K] = clearance.stiffness
-    param[sc.P_EXP] = clearance.exponent
-    (param[sc.P_CE],) = laws["damping"].parameters
-    param[sc.P_CF] = clearance.friction_coefficient
-    param[[sc.P_F0, sc.P_F1, sc.P_F2]] = laws["friction"].parameters
-    param[sc.P_WEAR] = laws["wear"].parameters[0]
-    param[sc.P_SHARE] = clearance.slider_wear_share
-    param[sc.P_WIDTH] = clearance.width
-    param[sc.P_ESTAR] = clearance.contact_modulus
-    param[sc.P_MIN_SPEED] = clearance.min_impact_speed
-    param[sc.P_TOL] = clearance.contact_tolerance
-    param[sc.P_ANGLE0] = angle0
-    return ints, param
-
-
 def build_system(model: Model, *, ideal: bool = False) -> System:
     """Build the kernel arrays of ``model`` (validated, SI).
 
@@ -317,8 +229,7 @@ def build_system(model: Model, *, ideal: bool = False) -> System:
     functions = _Functions()
     joints = {"kind": [], "body": [], "point": [], "axis": [], "angle0": [], "row": []}
     kernel_index: dict[str, int] = {}  # ideal joints: row of the kernels' joint table
-    clear = {"ints": [], "params": []}
-    slides = {"ints": [], "params": []}
+    rows: dict[str, list] = {kind.name: [] for kind in KINDS}
     row = 0
     for joint in model.joints:
         b1, b2 = joint.bodies
@@ -327,16 +238,8 @@ def build_system(model: Model, *, ideal: bool = False) -> System:
         axis /= np.linalg.norm(axis)
         angle0 = pose[b2][2] - pose[b1][2]
         if joint.clearance is not None and not ideal:
-            if joint.type == "revolute":
-                ints, params = _clearance_row(joint.clearance, index[b1], index[b2], points)
-                table = clear
-            else:
-                ints, params = _slider_row(
-                    joint.clearance, index[b1], index[b2], points, axis, angle0
-                )
-                table = slides
-            table["ints"].append(ints)
-            table["params"].append(params)
+            kind = BY_NAME[joint.type]
+            rows[kind.name].append(kind.row(joint, model, (index[b1], index[b2]), angle0))
             continue
         kernel_index[joint.name] = len(joints["kind"])
         joints["kind"].append(int(joint.kind))
@@ -445,45 +348,41 @@ def build_system(model: Model, *, ideal: bool = False) -> System:
             [int(EventDirection[e.direction.upper()]) for e in model.events], (), np.int64
         ),
     )
-    return System(
-        mechanism=mechanism,
-        journal_ints=_table(clear["ints"], (jc.N_INTS,), np.int64),
-        journal_params=_table(clear["params"], (jc.N_PARAMS,), np.float64),
-        slider_ints=_table(slides["ints"], (sc.N_INTS,), np.int64),
-        slider_params=_table(slides["params"], (sc.N_PARAMS,), np.float64),
-        events=events,
-    )
+    return System(mechanism=mechanism, elements=_element_rows(rows), events=events)
 
 
-def sliders_outside_guides(model: Model, y0: NDArray[np.float64]) -> list[str]:
-    """One line per slider that starts wholly outside its finite guide, at the pose y0."""
+def _element_rows(rows: dict[str, list]) -> dict[str, ElementRows]:
+    """Each kind's rows as arrays (``KIND.row`` gives one joint's)."""
+    tables = {}
+    for kind in KINDS:
+        module = kind.module
+        ints = [r[0] for r in rows[kind.name]]
+        params = [r[1] for r in rows[kind.name]]
+        tables[kind.name] = ElementRows(
+            ints=_table(ints, (module.N_INTS,), np.int64),
+            params=_table(params, (module.N_PARAMS,), np.float64),
+        )
+    return tables
+
+
+def start_problems(model: Model, y0: NDArray[np.float64]) -> list[str]:
+    """One line per clearance joint that cannot start from the pose y0 (``KIND.start_problems``)."""
     index = {name: i for i, name in enumerate(model.body_names)}
 
-    def place(body: str, x: float, y: float) -> NDArray[np.float64]:
+    def place(body: str, point: tuple[float, float]) -> NDArray[np.float64]:
+        """Global position [m] at y0 of ``point`` [m] in ``body``'s frame."""
         if body == "ground":
-            return np.array([x, y])
+            return np.asarray(point, dtype=float)
         bx, by, phi = y0[3 * index[body] : 3 * index[body] + 3]
         c, s = np.cos(phi), np.sin(phi)
-        return np.array([bx + c * x - s * y, by + s * x + c * y])
+        return np.array([bx + c * point[0] - s * point[1], by + s * point[0] + c * point[1]])
 
-    problems = []
-    for joint in model.slider_joints:
-        c = joint.clearance
-        if c.guide_length is None:
-            continue
-        guide, slider = joint.bodies
-        origin = place(guide, *model.point(guide, joint.points[0]))
-        axis = place(guide, *joint.axis) - place(guide, 0.0, 0.0)
-        centre = place(slider, *model.point(slider, joint.points[1]))
-        x = float((centre - origin) @ axis / np.linalg.norm(axis))
-        if abs(x) >= 0.5 * (c.guide_length + c.slider_length):
-            problems.append(
-                f"joints.{joint.name}: the slider starts wholly outside its guide (its centre "
-                f"{x * 1e3:.6g} mm along the axis from the guide's point, the guide "
-                f"{c.guide_length * 1e3:.6g} mm long and centred there); move the slider or "
-                "the guide's point, or lengthen guide_length"
-            )
-    return problems
+    return [
+        line
+        for kind in KINDS
+        for joint in kind.joints(model)
+        for line in kind.start_problems(joint, model, place)
+    ]
 
 
 def initial_guess(model: Model) -> NDArray[np.float64]:

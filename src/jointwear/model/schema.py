@@ -107,23 +107,18 @@ class Model(Table):
         return _named(self.joints, name)
 
     @property
-    def clearance_joints(self) -> tuple[RevoluteJoint, ...]:
-        """The revolute joints with clearance, in file order (the kernels' journal order)."""
-        return tuple(
-            j for j in self.joints if isinstance(j, RevoluteJoint) and j.clearance is not None
-        )
+    def clearance_joints(self) -> tuple[RevoluteJoint | TranslationalJoint, ...]:
+        """The joints with clearance, of every type, in file order."""
+        return tuple(j for j in self.joints if j.clearance is not None)
 
-    @property
-    def slider_joints(self) -> tuple[TranslationalJoint, ...]:
-        """The translational joints with clearance, in file order (the kernels' slider order)."""
-        return tuple(
-            j for j in self.joints if isinstance(j, TranslationalJoint) and j.clearance is not None
-        )
+    def joints_of(self, joint_type: str) -> tuple[RevoluteJoint | TranslationalJoint, ...]:
+        """The joints of ``joint_type`` with clearance, in file order (their kernel's order)."""
+        return tuple(j for j in self.joints if j.type == joint_type and j.clearance is not None)
 
     @property
     def has_clearance(self) -> bool:
         """Whether any joint has clearance."""
-        return bool(self.clearance_joints or self.slider_joints)
+        return bool(self.clearance_joints)
 
     def ideal(self) -> "Model":
         """The same model with every clearance joint made ideal (journal and slider centred)."""

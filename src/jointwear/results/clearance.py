@@ -1,83 +1,66 @@
 """Tables and summary figures of a run's clearance joints, from the loop's arrays.
 
-Revolute joints here, translational ones in ``results.slider``; the tables join both kinds
-(each row leaves the other kind's columns empty).
+Every joint type with clearance (``jointwear.joints``) gives its own rows; the tables join
+them, each row leaving the columns of other types empty.
 
-- wear profiles, one row per joint, surface and sector: ``joint, surface, sector,
-  angle_deg, depth_m`` (``angle_deg`` is the sector's centre in the surface's body frame);
-  the snapshots add the time they were taken, ``time_s``, in front;
-- impacts (contact onsets): ``time_s, joint, penetration_velocity_m_s, bearing_angle_deg,
-  journal_angle_deg, penetration_m`` (the last shows how closely the onset was located: it
-  lies between the contact tolerance and twice that);
+- wear profiles, one row per joint, surface and cell: ``joint, surface, sector, <position>,
+  depth_m`` (the position column is the kind's: ``angle_deg`` round a revolute joint's
+  surfaces, ``position_m`` along a translational joint's); the snapshots add the time they
+  were taken, ``time_s``, in front;
+- impacts (contact onsets): ``time_s, joint, penetration_velocity_m_s, <the kinds' columns>,
+  penetration_m`` (the last shows how closely the onset was located: it lies between the
+  contact tolerance and twice that);
 - per joint, the figures ``summary.json`` reports under ``clearance_joints``.
 """
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 import pandas as pd
 from numpy.typing import NDArray
 
-from ..kernels.elements import journal as cs
-from ..kernels.laws.normal import ElasticLaw
+from ..joints import KINDS
 from ..model import Model
-from ..model.clearance import Clearance
-from . import slider
 
-SURFACES = ("bearing", "journal")
 UM = 1e6  # micrometres per metre, for messages and figures
-WEAR_COLUMNS = ["joint", "surface", "sector", "angle_deg", "depth_m"]
-IMPACT_COLUMNS = [
-    "time_s",
-    "joint",
-    "penetration_velocity_m_s",
-    "bearing_angle_deg",
-    "journal_angle_deg",
-    "penetration_m",
-]
+WEAR_COLUMNS = ["joint", "surface", "sector", "depth_m"]  # with the kinds' position columns
 
 
-def wear_table(
-    model: Model, wear: NDArray[np.float64], slider_wear: NDArray[np.float64] | None = None
-) -> pd.DataFrame:
-    """Long table of the wear depths ``wear[k, surface, sector]`` [m] (and the sliders')."""
-    rows = []
-    for k, joint in enumerate(model.clearance_joints):
-        n = joint.clearance.sectors
-        centres = (np.arange(n) + 0.5) * 360.0 / n
-        for s, surface in enumerate(SURFACES):
-            for i in range(n):
-                rows.append((joint.name, surface, i, centres[i], wear[k, s, i]))
-    table = pd.DataFrame(rows, columns=WEAR_COLUMNS)
-    if slider_wear is None or not model.slider_joints:
-        return table
-    slides = slider.wear_table(model, slider_wear)
-    if not model.clearance_joints:
-        return slides
-    return pd.concat([table, slides], ignore_index=True)[wear_columns(model)]
+def _present(model: Model) -> list:
+    """The kinds ``model`` has joints of, in registry order."""
+    return [kind for kind in KINDS if kind.joints(model)]
 
 
 def wear_columns(model: Model) -> list[str]:
     """The wear table's columns for the clearance joint kinds of ``model``."""
-    angle = ["angle_deg"] if model.clearance_joints else []
-    position = ["position_m"] if model.slider_joints else []
-    return [*WEAR_COLUMNS[:3], *angle, *position, "depth_m"]
+    positions = list(dict.fromkeys(kind.wear_position for kind in _present(model)))
+    return [*WEAR_COLUMNS[:3], *positions, "depth_m"]
+
+
+def wear_table(model: Model, wear: dict[str, NDArray[np.float64]]) -> pd.DataFrame:
+    """Long table of the wear depths, ``wear[kind][k, surface, cell]`` [m]."""
+    frames = []
+    for kind in _present(model):
+        rows = [
+            (joint.name, surface, cell, position, depth)
+            for k, joint in enumerate(kind.joints(model))
+            for surface, cell, position, depth in kind.wear_rows(joint, wear[kind.name][k])
+        ]
+        columns = [*WEAR_COLUMNS[:3], kind.wear_position, "depth_m"]
+        frames.append(pd.DataFrame(rows, columns=columns))
+    if not frames:
+        return pd.DataFrame(columns=wear_columns(model))
+    if len(frames) == 1:
+        return frames[0]
+    return pd.concat(frames, ignore_index=True)[wear_columns(model)]
 
 
 def snapshot_table(
-    model: Model,
-    times: NDArray[np.float64],
-    snapshots: NDArray[np.float64],
-    taken: int,
-    slider_snapshots: NDArray[np.float64] | None = None,
+    model: Model, times: NDArray[np.float64], snapshots: dict[str, NDArray], taken: int
 ) -> pd.DataFrame:
     """The wear snapshots taken so far, each with its time ``time_s`` [s]."""
     tables = [
-        wear_table(
-            model, snapshots[i], None if slider_snapshots is None else slider_snapshots[i]
-        ).assign(time_s=times[i])
+        wear_table(model, {name: s[i] for name, s in snapshots.items()}).assign(time_s=times[i])
         for i in range(taken)
     ]
     if not tables:
@@ -88,107 +71,38 @@ def snapshot_table(
 
 def impact_columns(model: Model) -> list[str]:
     """The impact table's columns for the clearance joint kinds of ``model``."""
-    kinds = []
-    if model.clearance_joints:
-        kinds += IMPACT_COLUMNS[3:5]
-    if model.slider_joints:
-        kinds += slider.IMPACT_COLUMNS[3:5]
-    return [*IMPACT_COLUMNS[:3], *kinds, IMPACT_COLUMNS[-1]]
+    own = dict.fromkeys(c for kind in _present(model) for c in kind.impact_columns)
+    return ["time_s", "joint", "penetration_velocity_m_s", *own, "penetration_m"]
 
 
 def impact_rows(
-    model: Model, time: NDArray, slot: NDArray, info: NDArray, count: int
+    model: Model, time: NDArray, owner: NDArray, info: NDArray, count: int
 ) -> list[dict]:
-    """Rows of the impact table from the loop's impact log (``count`` entries)."""
-    journals = len(model.clearance_joints)
+    """Rows of the impact table from the loop's impact log (``count`` entries).
+
+    ``owner[i]``: the onset's kind (index in ``KINDS``) and its joint among that kind's.
+    """
+    joints = [kind.joints(model) for kind in KINDS]
     rows = []
     for i in range(count):
-        if slot[i] >= journals:
-            row = slider.impact_rows(model, time[i], slot[i] - journals, info[i])
-            rows.append(dict(zip(slider.IMPACT_COLUMNS, row, strict=True)))
-            continue
-        row = (
-            float(time[i]),
-            model.clearance_joints[slot[i]].name,
-            float(info[i, cs.IMPACT_SPEED]),
-            math.degrees(info[i, cs.IMPACT_THETA_B]),
-            math.degrees(info[i, cs.IMPACT_THETA_J]),
-            float(info[i, cs.IMPACT_DELTA]),
-        )
-        rows.append(dict(zip(IMPACT_COLUMNS, row, strict=True)))
+        kind, k = int(owner[i, 0]), int(owner[i, 1])
+        figures = KINDS[kind].impact_row(info[i])
+        rows.append({"time_s": float(time[i]), "joint": joints[kind][k].name, **figures})
     return rows
 
 
 def joint_summaries(
-    model: Model, totals: NDArray[np.float64], wear: NDArray[np.float64], duration: float
+    model: Model,
+    totals: dict[str, NDArray[np.float64]],
+    wear: dict[str, NDArray[np.float64]],
+    duration: float,
 ) -> dict[str, dict]:
-    """Per clearance joint: contact, impact, wear and energy figures (SI units in the keys).
+    """Per clearance joint, its figures (SI units in the keys), in registry then file order.
 
-    ``duration`` [s] is the simulated time the totals were gathered over.
+    ``totals`` and ``wear``: per kind, gathered over ``duration`` [s] of simulated time.
     """
-    summaries = {}
-    for k, joint in enumerate(model.clearance_joints):
-        c = joint.clearance
-        row = totals[k]
-        entry = {
-            "type": "revolute",
-            "radial_clearance_m": c.radial_clearance,
-            "max_contact_force_n": row[cs.T_MAX_FN],
-            "contact_time_fraction": min(1.0, row[cs.T_CONTACT_TIME] / duration)
-            if duration
-            else 0.0,
-            "impacts": int(row[cs.T_IMPACTS]),
-            "max_penetration_m": row[cs.T_MAX_DELTA],
-            "worn_volume_m3": row[cs.T_WORN_VOLUME],
-            "sliding_distance_m": row[cs.T_SLIDING],
-            "energy_dissipated_damping_j": row[cs.T_DAMPING_ENERGY],
-            "energy_dissipated_friction_j": row[cs.T_FRICTION_ENERGY],
-            "outside_law_ranges": _outside_ranges(c, row, duration),
-        }
-        if c.lubrication != "none":
-            entry["energy_dissipated_film_j"] = row[cs.T_FILM_ENERGY]
-        for s, surface in enumerate(SURFACES):
-            depths = wear[k, s, : c.sectors]
-            peak = int(np.argmax(depths))
-            worn = depths[peak] > 0.0
-            entry[f"max_wear_depth_{surface}_m"] = float(depths[peak])
-            entry[f"max_wear_angle_{surface}_deg"] = (
-                (peak + 0.5) * 360.0 / c.sectors if worn else None
-            )
-        summaries[joint.name] = {key: _plain(value) for key, value in entry.items()}
-    return summaries
-
-
-def _outside_ranges(c: Clearance, row: NDArray[np.float64], duration: float) -> dict:
-    """Per checked assumption of the joint's laws: its limit, the largest value, the time beyond.
-
-    Only the assumptions of the laws this joint uses (``kernels.elements.journal``).
-    """
-    checks = {
-        "penetration_over_clearance": (
-            cs.T_DEPTH_TIME,
-            cs.T_DEPTH_MAX,
-            cs.depth_limit(ElasticLaw[c.normal_law.upper()]),
-        )
-    }
-    if c.normal_law == "hertz" or c.wear_distribution != "elastic_foundation":
-        checks["hertz_half_width_over_journal_radius"] = (
-            cs.T_PATCH_TIME,
-            cs.T_PATCH_MAX,
-            cs.PATCH_LIMIT,
-        )
-    if c.lubrication != "none":
-        checks["eccentricity_ratio"] = (cs.T_FILM_TIME, cs.T_FILM_MAX, c.film_breakdown)
     return {
-        name: {
-            "limit": float(limit),
-            "largest": float(row[largest]),
-            "time_beyond_s": float(row[time]),
-            "time_fraction_beyond": float(row[time] / duration) if duration else 0.0,
-        }
-        for name, (time, largest, limit) in checks.items()
+        joint.name: kind.summary(joint, totals[kind.name][k], wear[kind.name][k], duration)
+        for kind in KINDS
+        for k, joint in enumerate(kind.joints(model))
     }
-
-
-def _plain(value: object) -> object:
-    return float(value) if isinstance(value, np.floating) else value

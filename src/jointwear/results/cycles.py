@@ -18,13 +18,10 @@ import numpy as np
 import pandas as pd
 from numpy.typing import NDArray
 
-from ..kernels.elements import journal as js
-from ..kernels.elements import slider as ks
+from ..joints import KINDS, TOTALS
 from ..model import Model
 
 MAX_WINDOWS = 10_000  # beyond this many cycles in a run, a window spans several cycles
-JOURNAL_PEAKS = (js.T_MAX_FN, js.T_MAX_DELTA, js.T_PATCH_MAX, js.T_DEPTH_MAX, js.T_FILM_MAX)
-SLIDER_PEAKS = (ks.T_MAX_FN, ks.T_MAX_DELTA)
 CYCLE_COLUMNS = [
     "cycle",
     "t_start_s",
@@ -88,17 +85,12 @@ def settling(model: Model, continuing: bool = False) -> Settling:
 class CycleWindows:
     """Cuts the elements' totals into windows at cycle ends and at the settling time.
 
-    ``totals``: the live arrays the compiled loop adds to (the journals', the sliders'),
-    with the indices of their running peaks.
+    ``totals``: per joint type with clearance, the live arrays the compiled loop adds to
+    (``ClearanceKind.peaks`` says which of their columns are running peaks).
     """
 
     def __init__(
-        self,
-        t0: float,
-        t_end: float,
-        settle: Settling,
-        totals: tuple[NDArray[np.float64], ...],
-        peaks: tuple[tuple[int, ...], ...],
+        self, t0: float, t_end: float, settle: Settling, totals: dict[str, NDArray[np.float64]]
     ) -> None:
         ends = [t0 + settle.time] if settle.time > 0.0 else []
         if settle.cycle is not None:
@@ -109,9 +101,11 @@ class CycleWindows:
         self._next = 0
         self._t0, self._start, self._steady_from = t0, t0, t0 + settle.time
         self._cycle = settle.cycle
-        self._totals, self._peaks = totals, peaks
-        self._last = [t.copy() for t in totals]
-        self._run_peaks = [np.zeros_like(t) for t in totals]
+        self._kinds = [kind for kind in KINDS if kind.name in totals]
+        self._totals = [totals[kind.name] for kind in self._kinds]
+        self._peaks = [kind.peaks for kind in self._kinds]
+        self._last = [t.copy() for t in self._totals]
+        self._run_peaks = [np.zeros_like(t) for t in self._totals]
         self.records: list[tuple[float, float, list[NDArray[np.float64]]]] = []
 
     @property
@@ -134,37 +128,35 @@ class CycleWindows:
         for live, peaks, run in zip(self._totals, self._peaks, self._run_peaks, strict=True):
             live[:, peaks] = np.maximum(live[:, peaks], run[:, peaks])
 
-    def steady(self) -> tuple[list[NDArray[np.float64]], float, int] | None:
+    def steady(self) -> tuple[dict[str, NDArray[np.float64]], float, int] | None:
         """The steady state's totals (per kind), its duration [s] and window count; or None."""
         windows = [r for r in self.records if r[0] >= self._steady_from * (1.0 - 1e-12)]
         if not windows:
             return None
-        combined = []
-        for kind, peaks in enumerate(self._peaks):
-            values = np.sum([w[2][kind] for w in windows], axis=0)
-            values[:, peaks] = np.max([w[2][kind][:, peaks] for w in windows], axis=0)
-            combined.append(values)
+        combined = {}
+        for i, (kind, peaks) in enumerate(zip(self._kinds, self._peaks, strict=True)):
+            values = np.sum([w[2][i] for w in windows], axis=0)
+            values[:, peaks] = np.max([w[2][i][:, peaks] for w in windows], axis=0)
+            combined[kind.name] = values
         return combined, windows[-1][1] - windows[0][0], len(windows)
 
     def table(self, model: Model) -> pd.DataFrame:
         """cycles.csv: per window and clearance joint, its figures (``CYCLE_COLUMNS``)."""
-        names = [j.name for j in model.clearance_joints], [j.name for j in model.slider_joints]
-        energies = (
-            (js.T_DAMPING_ENERGY, js.T_FRICTION_ENERGY, js.T_FILM_ENERGY),
-            (ks.T_DAMPING_ENERGY, ks.T_FRICTION_ENERGY),
-        )
+        names = [[j.name for j in kind.joints(model)] for kind in self._kinds]
+        energies = [kind.energies for kind in self._kinds]
         rows = []
         for start, end, values in self.records:
             cycle = 1 + math.floor((start - self._t0) / self._cycle + 1e-9) if self._cycle else None
             steady = start >= self._steady_from * (1.0 - 1e-12)
             for kind, joints in enumerate(names):
                 for k, joint in enumerate(joints):
-                    v = values[kind][k]  # T_ indices 0-7 are the same for both kinds
+                    v = values[kind][k]  # the common totals (TOTALS), then the kind's
                     rows.append((
-                        cycle, start, end, steady, joint, v[js.T_MAX_FN], v[js.T_MAX_DELTA],
-                        int(v[js.T_IMPACTS]), min(1.0, v[js.T_CONTACT_TIME] / (end - start)),
-                        v[js.T_WORN_VOLUME], float(sum(v[i] for i in energies[kind])),
-                        v[js.T_SLIDING],
+                        cycle, start, end, steady, joint, v[TOTALS["max_fn"]],
+                        v[TOTALS["max_delta"]], int(v[TOTALS["impacts"]]),
+                        min(1.0, v[TOTALS["contact_time"]] / (end - start)),
+                        v[TOTALS["worn_volume"]], float(sum(v[i] for i in energies[kind])),
+                        v[TOTALS["sliding"]],
                     ))  # fmt: skip
         return pd.DataFrame(rows, columns=CYCLE_COLUMNS)
 

@@ -49,7 +49,7 @@ def energy_balance(model: Model, timeseries: pd.DataFrame) -> pd.DataFrame:
             speed = speed - df[f"omega_{driver.relative_to}"].to_numpy()
         power_in += df[f"torque_{driver.name}"].to_numpy() * speed
     power_lost = np.zeros_like(time)
-    for joint in (*model.clearance_joints, *model.slider_joints):
+    for joint in model.clearance_joints:
         for quantity in DISSIPATION:
             column = f"{joint.name}_{quantity}"
             if column in df:

@@ -31,7 +31,7 @@ def with_tribology(model: Model, timeseries: pd.DataFrame) -> pd.DataFrame:
     extra = tribology_columns(model, timeseries)
     if extra.empty:
         return timeseries
-    after = {f"{j.name}_{OUTPUT_NAMES[-1]}": j.name for j in model.clearance_joints}
+    after = {f"{j.name}_{OUTPUT_NAMES[-1]}": j.name for j in model.joints_of("revolute")}
     order = []
     for column in timeseries.columns:
         order.append(column)
@@ -43,7 +43,7 @@ def with_tribology(model: Model, timeseries: pd.DataFrame) -> pd.DataFrame:
 def tribology_columns(model: Model, timeseries: pd.DataFrame) -> pd.DataFrame:
     """The ``COLUMNS`` of every revolute clearance joint, one row per row of ``timeseries``."""
     columns: dict[str, np.ndarray] = {}
-    for joint in model.clearance_joints:
+    for joint in model.joints_of("revolute"):
         c, name = joint.clearance, joint.name
         force = timeseries[f"{name}_fn"].to_numpy()
         speed = np.abs(timeseries[f"{name}_vt"].to_numpy())

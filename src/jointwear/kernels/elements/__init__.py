@@ -1,12 +1,14 @@
 """Contact elements: the registered kinds, and the interface the step loop sees.
 
 A kind is one module (``journal``: the revolute clearance joint; ``slider``: the translational
-one) giving four tables (fixed table, restart state, log, scratch) and the functions below for
-its rows. Each element has one or more *contact slots* (a journal one; a slider eight: its
-corners and the guide's edges); the loop
-locates the onset of every slot's contact period on the dense output and asks the kind what
-happens then. The functions here fan out over the kinds, in registration order: to register
-a kind, add its tables as fields of the four tuples and a line to each function.
+one) giving four tables (fixed table, restart state, log, scratch), ``SLOTS`` contact slots
+per element (a journal one; a slider eight: its corners and the guide's edges) and the
+functions below for its elements. The loop numbers the slots of all kinds one after the
+other, in the order of ``Elements``' fields; ``_locate`` is the one place that maps a slot to
+its kind, and the functions here fan out to the kinds.
+
+To register a kind (its Python side: ``jointwear.joints``): add its module's tables as a
+field of the four tuples, and its line to ``_locate`` and to each function below.
 """
 
 from typing import NamedTuple
@@ -14,42 +16,61 @@ from typing import NamedTuple
 from numba import njit
 
 from . import journal, slider
-from .journal import JournalLog, JournalScratch, JournalState, JournalTable
-from .slider import SliderLog, SliderScratch, SliderState, SliderTable
 
 
 class Elements(NamedTuple):
     """Every kind's table (fixed for a run)."""
 
-    journal: JournalTable
-    slider: SliderTable
+    journal: journal.JournalTable
+    slider: slider.SliderTable
 
 
 class ElementState(NamedTuple):
     """Every kind's restart state."""
 
-    journal: JournalState
-    slider: SliderState
+    journal: journal.JournalState
+    slider: slider.SliderState
 
 
 class ElementLog(NamedTuple):
     """Every kind's totals and snapshots."""
 
-    journal: JournalLog
-    slider: SliderLog
+    journal: journal.JournalLog
+    slider: slider.SliderLog
 
 
 class ElementScratch(NamedTuple):
     """Every kind's last evaluation."""
 
-    journal: JournalScratch
-    slider: SliderScratch
+    journal: journal.JournalScratch
+    slider: slider.SliderScratch
+
+
+KERNELS = (journal, slider)  # in the order of the tuples' fields
 
 
 @njit(cache=True, no_cpython_wrapper=True, inline="always")
 def slot_count(el):
-    """Number of contact slots of all elements: the journals', then the sliders'."""
-    return el.journal.ints.shape[0] + slider.SLOTS * el.slider.ints.shape[0]
+    """Number of contact slots of all elements."""
+    return journal.SLOTS * el.journal.ints.shape[0] + slider.SLOTS * el.slider.ints.shape[0]
+
+
+@njit(cache=True, no_cpython_wrapper=True, inline="always")
+def _locate(el, slot):
+    """(kind, slot among that kind's) of a slot: kinds in field order, SLOTS per element."""
+    first = journal.SLOTS * el.journal.ints.shape[0]
+    if slot < first:
+        return 0, slot
+    return 1, slot - first
+
+
+@njit(cache=True, no_cpython_wrapper=True, inline="always")
+def owner(el, slot):
+    """(kind, element within its kind) of a slot: where the loop logs an onset."""
+    kind, local = _locate(el, slot)
+    if kind == 0:
+        return kind, local // journal.SLOTS
+    return kind, local // slider.SLOTS
 
 
 @njit(cache=True, no_cpython_wrapper=True, inline="always")
@@ -62,41 +83,39 @@ def add_forces(el, st, sc, q, qd, g):
 @njit(cache=True, no_cpython_wrapper=True, inline="always")
 def penetration_excess(el, st, sc, slot, q, qd):
     """Penetration of a contact slot beyond its contact tolerance at (q, q') [m]."""
-    first = el.journal.ints.shape[0]
-    if slot < first:
-        return journal.penetration_excess(el.journal, st.journal, sc.journal, slot, q, qd)
-    return slider.penetration_excess(el.slider, st.slider, sc.slider, slot - first, q, qd)
+    kind, local = _locate(el, slot)
+    if kind == 0:
+        return journal.penetration_excess(el.journal, st.journal, sc.journal, local, q, qd)
+    return slider.penetration_excess(el.slider, st.slider, sc.slider, local, q, qd)
 
 
 @njit(cache=True, no_cpython_wrapper=True, inline="always")
 def tolerance(el, slot):
     """Contact tolerance of a slot [m]."""
-    first = el.journal.ints.shape[0]
-    if slot < first:
-        return journal.tolerance(el.journal, slot)
-    return slider.tolerance(el.slider, slot - first)
+    kind, local = _locate(el, slot)
+    if kind == 0:
+        return journal.tolerance(el.journal, local)
+    return slider.tolerance(el.slider, local)
 
 
 @njit(cache=True, no_cpython_wrapper=True, inline="always")
-def in_contact(st, slot):
+def in_contact(el, st, slot):
     """Whether a slot's contact period is under way."""
-    first = st.journal.contact_on.shape[0]
-    if slot < first:
-        return st.journal.contact_on[slot] == 1
-    return st.slider.contact_on[slot - first] == 1
+    kind, local = _locate(el, slot)
+    if kind == 0:
+        return st.journal.contact_on[local] == 1
+    return st.slider.contact_on[local] == 1
 
 
 @njit(cache=True, no_cpython_wrapper=True, inline="always")
 def begin_period(el, st, sc, log, slot, q, qd, info):
     """Open or close a slot's contact period at a step end; True when one opens (info filled)."""
-    first = el.journal.ints.shape[0]
-    if slot < first:
+    kind, local = _locate(el, slot)
+    if kind == 0:
         return journal.begin_period(
-            el.journal, st.journal, sc.journal, log.journal, slot, q, qd, info
+            el.journal, st.journal, sc.journal, log.journal, local, q, qd, info
         )
-    return slider.begin_period(
-        el.slider, st.slider, sc.slider, log.slider, slot - first, q, qd, info
-    )
+    return slider.begin_period(el.slider, st.slider, sc.slider, log.slider, local, q, qd, info)
 
 
 @njit(cache=True, no_cpython_wrapper=True, inline="always")

@@ -159,6 +159,7 @@ IMPACT_DELTA = 3  # penetration where the onset was located [m]
 N_IMPACT_INFO = 4
 
 DEGREES_OF_FREEDOM = 2  # a clearance joint frees the two components of the eccentricity
+SLOTS = 1  # contact slots per joint: the journal touches its bearing at one place
 
 
 class JournalTable(NamedTuple):
@@ -189,7 +190,7 @@ class JournalScratch(NamedTuple):
     contact: np.ndarray  # (nc, N_CONTACT)
 
 
-def make_journals(
+def make_tables(
     ints: np.ndarray, params: np.ndarray, snapshots: int
 ) -> tuple[JournalTable, JournalState, JournalLog, JournalScratch]:
     """Allocate a run's arrays for the joints of ``ints`` and ``params``, unworn (Python)."""

@@ -175,7 +175,7 @@ class SliderScratch(NamedTuple):
     sliding: np.ndarray  # (ns, SLOTS) sliding speed of each contact that wears [m/s]
 
 
-def make_sliders(
+def make_tables(
     ints: np.ndarray, params: np.ndarray, snapshots: int
 ) -> tuple[SliderTable, SliderState, SliderLog, SliderScratch]:
     """Allocate a run's arrays for the joints of ``ints`` and ``params``, unworn (Python)."""

@@ -62,7 +62,7 @@ def run_band(
 def band_columns(model: Model) -> list[str]:
     """The columns of life_band.csv, in order."""
     columns = ["cycles", "runs"]
-    for joint in model.clearance_joints:
+    for joint in model.joints_of("revolute"):
         for key in BANDED:
             stem = key.removesuffix("_m")
             columns += [f"{joint.name}.{key}", f"{joint.name}.{stem}_low_m"]
@@ -97,7 +97,7 @@ def band_table(
     cycles = cycles[(cycles >= value["cycles"].iloc[0]) & (cycles <= value["cycles"].iloc[-1])]
     reached = [np.isfinite(_curve(t, "cycles", cycles)) for t in tables]
     data: dict[str, np.ndarray] = {"cycles": cycles, "runs": 1 + np.sum(reached, axis=0)}
-    for joint in model.clearance_joints:
+    for joint in model.joints_of("revolute"):
         for key in BANDED:
             column = f"{joint.name}.{key}"
             centre = _curve(value, column, cycles)
@@ -172,7 +172,7 @@ def band_summary(
     joints: dict[str, dict] = {}
     if not len(value):
         return top, joints
-    for joint in model.clearance_joints:
+    for joint in model.joints_of("revolute"):
         mark = GROWTH_MARK * joint.clearance.radial_clearance
         column = f"{joint.name}.clearance_growth_m"
         crossings = [(cycles_at(t["cycles"], t[column], mark), t) for t in tables]

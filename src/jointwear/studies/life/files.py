@@ -19,7 +19,6 @@ import pandas as pd
 
 from ...io import append, check_folder, claim, make_folder, remove, write_atomic, write_text
 from ...model import ModelError
-from ...results.clearance import WEAR_COLUMNS
 from ...results.run_state import RunState, load_run_state
 
 TABLE = "life.csv"
@@ -31,7 +30,7 @@ FIGURES = "figures"
 FIGURE_FILES = ("life_wear.png", "life_profiles.png")  # what figures.life writes there
 CHECKPOINTS = "checkpoint"
 CHECKPOINT = "checkpoint.json"
-PROFILE_COLUMNS = ["update", "cycles", *WEAR_COLUMNS]
+PROFILE_COLUMNS = ["update", "cycles", "joint", "surface", "sector", "angle_deg", "depth_m"]
 FILES = (  # the fixed names a life run writes, for ``jointwear.io.claim``
     TABLE, PROFILES, SUMMARY, BAND_TABLE, MODEL, f"{CHECKPOINTS}/{CHECKPOINT}",
     *(f"{FIGURES}/{name}" for name in FIGURE_FILES),

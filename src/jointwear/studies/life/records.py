@@ -20,10 +20,11 @@ import pandas as pd
 from numpy.typing import NDArray
 
 from ..._version import __version__
+from ...joints.revolute import SURFACES
 from ...model import Model
 from ...model.sections import RevoluteJoint
 from ...results import Results
-from ...results.clearance import SURFACES, wear_table
+from ...results.clearance import wear_table
 
 GRID_CELLS = 2**20  # evaluations per block of the clearance-growth search
 GROWTH_MARK = 0.5  # the summary reports the cycles at which the growth reached this share of c
@@ -89,7 +90,7 @@ def clearance_growths(
 ) -> NDArray[np.float64]:
     """Effective clearance growth [m] of every clearance joint, for profiles ``wear``."""
     growths = []
-    for k, joint in enumerate(model.clearance_joints):
+    for k, joint in enumerate(model.joints_of("revolute")):
         n = joint.clearance.sectors
         growths.append(clearance_growth(wear[k, 0, :n], wear[k, 1, :n], psi[k]))
     return np.array(growths)
@@ -117,7 +118,7 @@ def driver_columns(model: Model, driver: str) -> tuple[str, str]:
 def table_columns(model: Model, driver: str) -> list[str]:
     """The columns of life.csv, in order."""
     columns = ["update", "cycles", "simulated_cycles", "extrapolated_cycles", "steady"]
-    for joint in model.clearance_joints:
+    for joint in model.joints_of("revolute"):
         columns += [f"{joint.name}.{key}" for key in _JOINT_KEYS]
     return [*columns, driver_columns(model, driver)[1], "wall_s"]
 
@@ -163,7 +164,7 @@ def update_row(
         Wall time of the whole run so far [s].
     """
     row: list = list(counts)
-    for k, joint in enumerate(model.clearance_joints):
+    for k, joint in enumerate(model.joints_of("revolute")):
         n = joint.clearance.sectors
         row += [
             float(wear[k, 0, :n].max()),
@@ -180,7 +181,7 @@ def update_row(
 
 def profile_rows(model: Model, update: int, cycles: int, wear: NDArray[np.float64]) -> list[list]:
     """Rows of profiles.csv: ``update, cycles, joint, surface, sector, angle_deg, depth_m``."""
-    table = wear_table(model, wear)
+    table = wear_table(model, {"revolute": wear})
     return [[update, cycles, *row] for row in table.itertuples(index=False, name=None)]
 
 
@@ -227,7 +228,7 @@ def life_summary(
         "unsteady_updates": int((table["steady"] == 0).sum()),
     }
     joints = {}
-    for k, joint in enumerate(model.clearance_joints):
+    for k, joint in enumerate(model.joints_of("revolute")):
         c = joint.clearance.radial_clearance
         entry: dict[str, float | None] = {"radial_clearance_m": c}
         if last is not None:

@@ -190,12 +190,12 @@ def life(
         driver, period = cycle_driver(model)
     except ModelError as error:
         problems += error.problems
-    if not model.clearance_joints:
+    if not model.joints_of("revolute"):
         problems.append("joints: a life run needs a revolute clearance joint ([joints.clearance])")
     problems += [
         f"joints.{joint.name}: a life run extrapolates the wear of revolute clearance joints "
         "only; run a translational joint with clearance with `jointwear run`"
-        for joint in model.slider_joints
+        for joint in model.joints_of("translational")
     ]
     if problems:
         raise ModelError(problems)
@@ -217,7 +217,7 @@ def life(
                 run.stop(INTERRUPTED, f"interrupted at {point.cycles} cycles{RESUME}")
     with stop_requests():  # the folder is completed whatever comes now
         table, profiles = files.read_tables(folder)
-        wear = None if point.state is None else point.state.wear
+        wear = None if point.state is None else point.state.wear["revolute"]
         outcome = {
             "status": run.status,
             "message": run.message,

@@ -86,7 +86,7 @@ class LifeRun:
             if settled is None:
                 return point
             runs = measured = [settled]
-            rate, steady = settled.final.wear / simulated, True
+            rate, steady = settled.final.wear["revolute"] / simulated, True
         else:
             outcome = self._measure(point, left)
             if outcome is None:
@@ -94,13 +94,15 @@ class LifeRun:
             runs, measured, rate, steady = outcome
             simulated = len(runs)
         final = runs[-1].final
-        psi = [relative_angle_range(joint, measured) for joint in model.clearance_joints]
+        psi = [relative_angle_range(joint, measured) for joint in model.joints_of("revolute")]
         extra = 0
         if settings.extrapolate and not settling:
-            growth = clearance_growths(model, final.wear, psi)
-            done = final.wear - (0.0 if point.state is None else point.state.wear)
+            growth = clearance_growths(model, final.wear["revolute"], psi)
+            done = final.wear["revolute"] - (
+                0.0 if point.state is None else point.state.wear["revolute"]
+            )
             extra = self._extrapolated_cycles(rate, done, growth, left - simulated)
-        wear = final.wear + extra * rate
+        wear = final.wear["revolute"] + extra * rate
         growth = clearance_growths(model, wear, psi)
         cycles = point.cycles + simulated + extra
         if self._past_limit(wear, growth, point.cycles, cycles):
@@ -110,7 +112,7 @@ class LifeRun:
         wall = self.wall()
         row = update_row(model, self.driver, counts, wear, rate, growth, measured, wall)
         files.append_update(self.folder, row, profile_rows(model, update, cycles, wear))
-        new = files.Checkpoint(update, cycles, counts[2], wall, final.with_wear(wear))
+        new = files.Checkpoint(update, cycles, counts[2], wall, final.with_wear({"revolute": wear}))
         files.save_checkpoint(self.folder, new, self.record)
         return new
 
@@ -137,8 +139,12 @@ class LifeRun:
             results = self._simulate(point, state, len(runs), 1)
             if results is None:
                 return None
-            start = np.zeros_like(results.final.wear) if state is None else state.wear
-            rates.append(results.final.wear - start)
+            start = (
+                np.zeros_like(results.final.wear["revolute"])
+                if state is None
+                else state.wear["revolute"]
+            )
+            rates.append(results.final.wear["revolute"] - start)
             runs.append(results)
             state = results.final
             if not settings.extrapolate:
@@ -158,7 +164,7 @@ class LifeRun:
 
     def _steady(self, before: NDArray[np.float64], last: NDArray[np.float64]) -> bool:
         """Whether two wears per cycle agree, sector by sector, to ``steady_tolerance``."""
-        for k, joint in enumerate(self.model.clearance_joints):
+        for k, joint in enumerate(self.model.joints_of("revolute")):
             n = joint.clearance.sectors
             change = np.abs(last[k, :, :n] - before[k, :, :n]).max()
             if change > self.settings.steady_tolerance * last[k, :, :n].max():
@@ -212,7 +218,7 @@ class LifeRun:
         [m/cycle].
         """
         extra = left
-        for k, joint in enumerate(self.model.clearance_joints):
+        for k, joint in enumerate(self.model.joints_of("revolute")):
             n = joint.clearance.sectors
             bound = self.settings.change_bound(joint.clearance.radial_clearance + growth[k])
             wearing = rate[k, :, :n] > 0.0
@@ -225,7 +231,7 @@ class LifeRun:
         self, wear: NDArray[np.float64], growth: NDArray[np.float64], before: int, after: int
     ) -> bool:
         """Stop if profiles ``wear`` pass a limit (``study.life``); True if so."""
-        for k, joint in enumerate(self.model.clearance_joints):
+        for k, joint in enumerate(self.model.joints_of("revolute")):
             c = joint.clearance
             journal = wear[k, 1, : c.sectors].max()
             if journal >= c.journal_radius:

@@ -167,9 +167,7 @@ def sweep(
         _write_table(table, folder)
         drawn = []
         if figures:
-            joints = {
-                j.name for m in models.values() for j in (*m.clearance_joints, *m.slider_joints)
-            }
+            joints = {j.name for m in models.values() for j in m.clearance_joints}
             drawn = _draw(folder, table, cases, joints)
     return SweepResults(folder, table, skipped, drawn, interrupted)
 

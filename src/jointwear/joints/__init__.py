@@ -1,0 +1,15 @@
+"""Joint types with clearance, each one subpackage: the registry the rest of the code reads.
+
+``KINDS`` lists them in the order of the compiled kinds (``kernels.elements.Elements``). To add
+a kind, write its subpackage (``kind.py`` says what it gives) and its compiled module, and add
+it here and in ``kernels/elements/__init__.py``.
+"""
+
+from .kind import TOTALS, ClearanceKind
+from .revolute import KIND as REVOLUTE
+from .translational import KIND as TRANSLATIONAL
+
+KINDS: tuple[ClearanceKind, ...] = (REVOLUTE, TRANSLATIONAL)
+BY_NAME = {kind.name: kind for kind in KINDS}
+
+__all__ = ["BY_NAME", "KINDS", "TOTALS", "ClearanceKind"]

@@ -1,0 +1,165 @@
+"""The revolute joint with clearance: a journal in its bearing (``kernels.elements.journal``).
+
+Wear table rows: ``surface`` is ``bearing`` or ``journal``, ``angle_deg`` the sector's centre
+in the surface's body frame. Impact rows: the contact's angle in the bearing's and the
+journal's frames. Summary: the common figures, the radial clearance, the deepest wear of each
+surface and where, and the law-range checks (``outside_law_ranges``).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numpy.typing import NDArray
+from typing_extensions import override
+
+from ..kind import ClearanceKind, common_figures, deepest
+
+SURFACES = ("bearing", "journal")  # the first index of the kernel's wear array
+
+
+class RevoluteKind(ClearanceKind):
+    """A journal in its bearing."""
+
+    name = "revolute"
+    kernel = "journal"
+    wear_position = "angle_deg"
+    impact_columns = ("bearing_angle_deg", "journal_angle_deg")
+
+    @property
+    @override
+    def peaks(self) -> tuple[int, ...]:
+        js = self.module
+        return (js.T_MAX_FN, js.T_MAX_DELTA, js.T_PATCH_MAX, js.T_DEPTH_MAX, js.T_FILM_MAX)
+
+    @property
+    @override
+    def energies(self) -> tuple[int, ...]:
+        return (*super().energies, self.module.T_FILM_ENERGY)
+
+    @override
+    def row(
+        self, joint: object, model: object, bodies: tuple[int, int], angle0: float
+    ) -> tuple[list[int], NDArray[np.float64]]:
+        from ...model.clearance import WEAR_DISTRIBUTIONS, law_parameters
+
+        jc = self.module
+        clearance = joint.clearance
+        centres = [model.point(b, p) for b, p in zip(joint.bodies, joint.points, strict=True)]
+        laws = law_parameters(clearance)
+        ints = [0] * jc.N_INTS
+        ints[jc.I_BEARING], ints[jc.I_JOURNAL] = bodies
+        ints[jc.I_NORMAL] = laws["normal"].code
+        ints[jc.I_DAMPING] = laws["damping"].code
+        ints[jc.I_LUBRICATION] = laws["lubrication"].code
+        ints[jc.I_FRICTION] = laws["friction"].code
+        ints[jc.I_WEAR] = laws["wear"].code
+        ints[jc.I_SPREAD] = WEAR_DISTRIBUTIONS[clearance.wear_distribution]
+        ints[jc.I_FEEDBACK] = int(clearance.wear_feedback)
+        ints[jc.I_SECTORS] = clearance.sectors
+        param = np.zeros(jc.N_PARAMS)
+        param[[jc.P_SB_X, jc.P_SB_Y]] = centres[0]
+        param[[jc.P_SJ_X, jc.P_SJ_Y]] = centres[1]
+        param[jc.P_RB] = clearance.bearing_radius
+        param[jc.P_RJ] = clearance.journal_radius
+        param[jc.P_C] = clearance.radial_clearance
+        param[jc.P_K] = clearance.stiffness
+        param[jc.P_EXP] = clearance.exponent
+        (param[jc.P_CE],) = laws["damping"].parameters
+        param[jc.P_CF] = clearance.friction_coefficient
+        param[[jc.P_F0, jc.P_F1, jc.P_F2]] = laws["friction"].parameters
+        param[jc.P_WEAR] = laws["wear"].parameters[0]
+        param[jc.P_SHARE] = clearance.journal_wear_share
+        param[jc.P_WIDTH] = clearance.width
+        param[jc.P_RSTAR] = clearance.relative_radius
+        param[jc.P_ESTAR] = clearance.contact_modulus
+        param[jc.P_MIN_SPEED] = clearance.min_impact_speed
+        param[jc.P_TOL] = clearance.contact_tolerance
+        param[[jc.P_VISCOSITY, jc.P_BREAKDOWN]] = laws["lubrication"].parameters
+        return ints, param
+
+    @override
+    def columns(self, joint: object) -> tuple[str, ...]:
+        jc = self.module
+        film = jc.FILM_OUTPUT_NAMES if joint.clearance.lubrication != "none" else ()
+        return (*jc.OUTPUT_NAMES, *film)
+
+    @override
+    def wear_rows(self, joint: object, wear: NDArray[np.float64]) -> list[tuple]:
+        n = joint.clearance.sectors
+        centres = (np.arange(n) + 0.5) * 360.0 / n
+        return [
+            (surface, i, centres[i], wear[s, i])
+            for s, surface in enumerate(SURFACES)
+            for i in range(n)
+        ]
+
+    @override
+    def impact_row(self, info: NDArray[np.float64]) -> dict[str, object]:
+        jc = self.module
+        return {
+            "penetration_velocity_m_s": float(info[jc.IMPACT_SPEED]),
+            "bearing_angle_deg": math.degrees(info[jc.IMPACT_THETA_B]),
+            "journal_angle_deg": math.degrees(info[jc.IMPACT_THETA_J]),
+            "penetration_m": float(info[jc.IMPACT_DELTA]),
+        }
+
+    @override
+    def summary(
+        self, joint: object, totals: NDArray[np.float64], wear: NDArray[np.float64], duration: float
+    ) -> dict[str, object]:
+        jc = self.module
+        c = joint.clearance
+        entry = common_figures(self, totals, duration)
+        entry = {
+            "type": entry.pop("type"),
+            "radial_clearance_m": c.radial_clearance,
+            **entry,
+            "outside_law_ranges": _outside_ranges(jc, c, totals, duration),
+        }
+        if c.lubrication != "none":
+            entry["energy_dissipated_film_j"] = float(totals[jc.T_FILM_ENERGY])
+        for s, surface in enumerate(SURFACES):
+            depth, peak = deepest(wear[s, : c.sectors])
+            entry[f"max_wear_depth_{surface}_m"] = depth
+            entry[f"max_wear_angle_{surface}_deg"] = (
+                None if peak is None else (peak + 0.5) * 360.0 / c.sectors
+            )
+        return entry
+
+
+def _outside_ranges(jc: object, c: object, row: NDArray[np.float64], duration: float) -> dict:
+    """Per checked assumption of the joint's laws: its limit, the largest value, the time beyond.
+
+    Only the assumptions of the laws this joint uses (``kernels.elements.journal``).
+    """
+    from ...kernels.laws.normal import ElasticLaw
+
+    checks = {
+        "penetration_over_clearance": (
+            jc.T_DEPTH_TIME,
+            jc.T_DEPTH_MAX,
+            jc.depth_limit(ElasticLaw[c.normal_law.upper()]),
+        )
+    }
+    if c.normal_law == "hertz" or c.wear_distribution != "elastic_foundation":
+        checks["hertz_half_width_over_journal_radius"] = (
+            jc.T_PATCH_TIME,
+            jc.T_PATCH_MAX,
+            jc.PATCH_LIMIT,
+        )
+    if c.lubrication != "none":
+        checks["eccentricity_ratio"] = (jc.T_FILM_TIME, jc.T_FILM_MAX, c.film_breakdown)
+    return {
+        name: {
+            "limit": float(limit),
+            "largest": float(row[largest]),
+            "time_beyond_s": float(row[time]),
+            "time_fraction_beyond": float(row[time] / duration) if duration else 0.0,
+        }
+        for name, (time, largest, limit) in checks.items()
+    }
+
+
+KIND = RevoluteKind()

@@ -1,0 +1,147 @@
+"""The translational joint with clearance: a slider in its guide (``kernels.elements.slider``).
+
+Wear table rows: ``surface`` is one of the mapped surfaces (``guide_top``, ``guide_bottom``,
+``slider_top``, ``slider_bottom``; an unbounded guide keeps no map of its wear, so its surfaces
+have no rows), ``position_m`` the segment's centre along its surface from the surface's middle,
+in its body's frame (the guide's from the joint's first point, the slider's from its centre,
+positive along the axis). Impact rows: the contact (a corner or a guide edge,
+``kernels.elements.slider.CONTACT_NAMES``) and where along the guide it is.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import NDArray
+from typing_extensions import override
+
+from ..kind import ClearanceKind, common_figures, deepest
+
+SURFACES = ("guide_top", "guide_bottom", "slider_top", "slider_bottom")  # the kernel's order
+
+
+def surfaces(joint: object) -> dict[str, float]:
+    """{mapped surface: its length [m]}, in the order of the kernel's wear array."""
+    c = joint.clearance
+    guide = c.guide_length
+    lengths = (guide, guide, c.slider_length, c.slider_length)
+    return {name: length for name, length in zip(SURFACES, lengths, strict=True) if length}
+
+
+def segment_centres(length: float, segments: int) -> NDArray[np.float64]:
+    """Centres of a surface's segments from its middle [m]."""
+    return (np.arange(segments) + 0.5) * length / segments - 0.5 * length
+
+
+class TranslationalKind(ClearanceKind):
+    """A slider in its guide."""
+
+    name = "translational"
+    kernel = "slider"
+    wear_position = "position_m"
+    impact_columns = ("contact", "guide_position_m")
+
+    @override
+    def row(
+        self, joint: object, model: object, bodies: tuple[int, int], angle0: float
+    ) -> tuple[list[int], NDArray[np.float64]]:
+        from ...model.clearance import law_parameters
+
+        sc = self.module
+        clearance = joint.clearance
+        points = [model.point(b, p) for b, p in zip(joint.bodies, joint.points, strict=True)]
+        axis = np.array(joint.axis, dtype=float)
+        axis /= np.linalg.norm(axis)
+        laws = law_parameters(clearance)
+        ints = [0] * sc.N_INTS
+        ints[sc.I_GUIDE], ints[sc.I_SLIDER] = bodies
+        ints[sc.I_NORMAL] = laws["normal"].code
+        ints[sc.I_DAMPING] = laws["damping"].code
+        ints[sc.I_FRICTION] = laws["friction"].code
+        ints[sc.I_WEAR] = laws["wear"].code
+        ints[sc.I_FEEDBACK] = int(clearance.wear_feedback)
+        ints[sc.I_SEGMENTS] = clearance.segments
+        ints[sc.I_ENDS] = int(clearance.guide_length is not None)
+        c, s = np.cos(angle0), np.sin(angle0)
+        param = np.zeros(sc.N_PARAMS)
+        param[[sc.P_G_X, sc.P_G_Y]] = points[0]
+        param[[sc.P_U_X, sc.P_U_Y]] = axis
+        param[[sc.P_S_X, sc.P_S_Y]] = points[1]
+        param[[sc.P_US_X, sc.P_US_Y]] = (c * axis[0] + s * axis[1], -s * axis[0] + c * axis[1])
+        param[sc.P_A] = 0.5 * clearance.slider_length
+        param[sc.P_B] = 0.5 * clearance.slider_height
+        param[sc.P_H] = clearance.guide_half_height
+        param[sc.P_L] = 0.5 * (clearance.guide_length or 0.0)
+        param[sc.P_K] = clearance.stiffness
+        param[sc.P_EXP] = clearance.exponent
+        (param[sc.P_CE],) = laws["damping"].parameters
+        param[sc.P_CF] = clearance.friction_coefficient
+        param[[sc.P_F0, sc.P_F1, sc.P_F2]] = laws["friction"].parameters
+        param[sc.P_WEAR] = laws["wear"].parameters[0]
+        param[sc.P_SHARE] = clearance.slider_wear_share
+        param[sc.P_WIDTH] = clearance.width
+        param[sc.P_ESTAR] = clearance.contact_modulus
+        param[sc.P_MIN_SPEED] = clearance.min_impact_speed
+        param[sc.P_TOL] = clearance.contact_tolerance
+        param[sc.P_ANGLE0] = angle0
+        return ints, param
+
+    def start_problems(self, joint: object, model: object, place: object) -> list[str]:
+        """A slider that starts wholly outside its finite guide."""
+        c = joint.clearance
+        if c.guide_length is None:
+            return []
+        guide, slider = joint.bodies
+        origin = place(guide, model.point(guide, joint.points[0]))
+        axis = place(guide, joint.axis) - place(guide, (0.0, 0.0))
+        centre = place(slider, model.point(slider, joint.points[1]))
+        x = float((centre - origin) @ axis / np.linalg.norm(axis))
+        if abs(x) < 0.5 * (c.guide_length + c.slider_length):
+            return []
+        return [
+            f"joints.{joint.name}: the slider starts wholly outside its guide (its centre "
+            f"{x * 1e3:.6g} mm along the axis from the guide's point, the guide "
+            f"{c.guide_length * 1e3:.6g} mm long and centred there); move the slider or "
+            "the guide's point, or lengthen guide_length"
+        ]
+
+    @override
+    def columns(self, joint: object) -> tuple[str, ...]:
+        return self.module.output_names(joint.clearance.guide_length is not None)
+
+    @override
+    def wear_rows(self, joint: object, wear: NDArray[np.float64]) -> list[tuple]:
+        n = joint.clearance.segments
+        rows = []
+        for surface, length in surfaces(joint).items():
+            s = SURFACES.index(surface)
+            centres = segment_centres(length, n)
+            rows += [(surface, i, centres[i], wear[s, i]) for i in range(n)]
+        return rows
+
+    @override
+    def impact_row(self, info: NDArray[np.float64]) -> dict[str, object]:
+        ks = self.module
+        return {
+            "penetration_velocity_m_s": float(info[ks.IMPACT_SPEED]),
+            "contact": ks.CONTACT_NAMES[int(info[ks.IMPACT_CONTACT])],
+            "guide_position_m": float(info[ks.IMPACT_X_GUIDE]),
+            "penetration_m": float(info[ks.IMPACT_DELTA]),
+        }
+
+    @override
+    def summary(
+        self, joint: object, totals: NDArray[np.float64], wear: NDArray[np.float64], duration: float
+    ) -> dict[str, object]:
+        c = joint.clearance
+        entry = common_figures(self, totals, duration)
+        entry = {"type": entry.pop("type"), "gap_m": c.clearance_gap, **entry}
+        for surface, length in surfaces(joint).items():
+            depth, peak = deepest(wear[SURFACES.index(surface), : c.segments])
+            entry[f"max_wear_depth_{surface}_m"] = depth
+            entry[f"max_wear_position_{surface}_m"] = (
+                None if peak is None else float(segment_centres(length, c.segments)[peak])
+            )
+        return entry
+
+
+KIND = TranslationalKind()
