@@ -10,18 +10,21 @@ from PIL import Image
 from runs import EXAMPLES, PER_METRE, drawn_per_metre, simulate_ok
 
 from jointwear.figures.animation import save_animation
-from jointwear.figures.clearance import (
+from jointwear.joints.revolute import KIND
+from jointwear.joints.revolute.figures import (
     PROFILE_SHARE,
     plot_dynamics,
     plot_orbit,
     plot_wear_polar,
     plot_wear_profile,
     plot_wear_sectors,
-    save_clearance_figures,
     wear_exaggeration,
 )
-from jointwear.figures.names import CLEARANCE_FIGURES
+from jointwear.joints.revolute.figures import (
+    save_figures as save_clearance_figures,
+)
 
+CLEARANCE_FIGURES = [name for name, _ in KIND.figures]
 FOURBAR = EXAMPLES / "flores2009_fourbar.toml"
 # 2.5 crank turns; snapshots at 0.03, 0.06 and 0.09 s, so the end of the run is not one.
 SHORT = ["solver.t_end=0.1", "solver.wear_snapshot_interval=0.03"]
@@ -175,7 +178,7 @@ def test_figures_drawn_by_the_helper_process_are_those_drawn_here(fourbar, ideal
 
 
 def test_only_the_papers_model_is_titled_after_the_papers_figures(fourbar, ideal):
-    from jointwear.figures.clearance import plot_orbit
+    from jointwear.joints.revolute.figures import plot_orbit
 
     assert plot_orbit(fourbar).get_suptitle().endswith("(paper Fig. 7d)")
     other = replace(fourbar, model=fourbar.model.with_values({"name": "my_engine"}))

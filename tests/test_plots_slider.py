@@ -9,18 +9,23 @@ from runs import EXAMPLES, drawn_per_metre, simulate_ok
 
 import jointwear as jw
 from jointwear.figures.animation import CLEARANCE_SHARE, mechanism_scene, save_animation
-from jointwear.figures.clearance import plot_dynamics, plot_wear_sectors
+from jointwear.figures.crank import crank_abscissa
 from jointwear.figures.folder import save_figures
-from jointwear.figures.names import ALL_FIGURES, SLIDER_FIGURES
-from jointwear.figures.slider import (
-    crank_abscissa,
+from jointwear.figures.names import ALL_FIGURES
+from jointwear.io import write_text
+from jointwear.joints.revolute.figures import plot_dynamics, plot_wear_sectors
+from jointwear.joints.translational import KIND
+from jointwear.joints.translational.figures import (
     plot_corner_forces,
     plot_guide_wear,
     plot_slider_motion,
-    save_slider_figures,
     tilt_limit,
 )
-from jointwear.io import write_text
+from jointwear.joints.translational.figures import (
+    save_figures as save_slider_figures,
+)
+
+SLIDER_FIGURES = [name for name, _ in KIND.figures]
 
 PISTON = EXAMPLES / "slider_crank_piston_clearance.toml"
 # About 1.2 free-crank turns (the crank slows at mid-stroke); snapshots at 0.03 and 0.06 s.
@@ -225,7 +230,7 @@ def test_animation_of_an_unbounded_guide_spans_the_travel(unbounded):
 
 
 def test_animation_draws_an_ideal_slider_on_its_guide():
-    from jointwear.figures.animation import IDEAL_SLIDER_ASPECT, IDEAL_SLIDER_SHARE
+    from jointwear.joints.translational.animation import IDEAL_SLIDER_ASPECT, IDEAL_SLIDER_SHARE
 
     ideal = simulate_ok(EXAMPLES / "slider_crank.toml", ["solver.t_end=0.012"])  # one turn
     scene = mechanism_scene(ideal, frames=10)

@@ -31,13 +31,12 @@ from .progress import CompileNotice, ProgressBar
 if TYPE_CHECKING:
     from numpy.typing import NDArray
 
+    from ..joints import ClearanceKind
     from ..model import Model
-    from ..model.clearance import Clearance, ContactKeys
-    from ..model.sections import TranslationalJoint
+    from ..model.clearance import ContactKeys
     from ..results import Results
 
 PROGRESS_AFTER_S = 1.0  # show a progress bar only for runs longer than this
-HERTZ_REFERENCE_FORCES = (100.0, 1000.0)  # loads at which `check` shows the Hertz patch [N]
 
 
 def run(
@@ -199,9 +198,6 @@ def _wear_place(joint: dict, surface: str) -> str:
     return "" if position is None else f" at {position * 1e3:.4g} mm"
 
 
-PENETRATION_SHARES = (0.01, 0.1, 0.4)  # of the clearance, where check shows the contact law
-
-
 def check(model: ModelPath, overrides: Overrides = None) -> None:
     """Validate MODEL, assemble it and print its degrees of freedom, initial pose and joints.
 
@@ -211,6 +207,7 @@ def check(model: ModelPath, overrides: Overrides = None) -> None:
     parameters follow.
     """
     from ..engine.prepare import prepare  # the model schema and the kernels, no pandas
+    from ..joints import KINDS
     from ..mechanism.system import freed_degrees_of_freedom
     from ..model import ModelError, load_model
 
@@ -246,69 +243,18 @@ def check(model: ModelPath, overrides: Overrides = None) -> None:
         vx, vy, w = assembly.y0[n + 3 * i : n + 3 * i + 3]
         table.add_row(body.name, *(number(v) for v in (x, y, math.degrees(phi), vx, vy, w)))
     print_table(keep_whole(table, *range(1, 7)))
-    for joint in parsed.joints_of("revolute"):
-        print_table(_clearance_table(joint.name, joint.clearance))
-    for joint in parsed.joints_of("translational"):
-        print_table(_slider_table(parsed, joint, assembly.y0))
+    for kind in KINDS:
+        for joint in kind.joints(parsed):
+            print_table(_clearance_table(kind, joint, parsed, assembly.y0))
 
 
-def _clearance_table(name: str, clearance: Clearance) -> Table:
-    """The derived contact parameters of a clearance joint, and its laws with their keys."""
-    table = Table(title=f"clearance joint '{name}'", caption_justify="left")
-    table.add_column("quantity")
-    table.add_column("value", justify="right")
-    table.add_column("unit")
-    rows = [("radial clearance c = R_B - R_J", clearance.radial_clearance * 1e3, "mm")]
-    if clearance.normal_law == "hertz":
-        rows.append(
-            (f"contact stiffness K (n = {clearance.exponent:g})", clearance.stiffness, "N/m^n")
-        )
-    rows += [
-        ("contact modulus E*", clearance.contact_modulus / 1e9, "GPa"),
-        ("relative radius R* = R_B R_J / c", clearance.relative_radius, "m"),
-    ]
-    for share in PENETRATION_SHARES:
-        force, stiffness = clearance.elastic_force(share * clearance.radial_clearance)
-        rows.append((f"force F at delta = {share:.0%} of c", force / 1e3, "kN"))
-        rows.append(("stiffness dF/d(delta) there", stiffness, "N/m"))
-    for force in HERTZ_REFERENCE_FORCES:
-        b, p_max = clearance.hertz_patch(force)
-        rows.append((f"Hertz half-width b at {force:g} N", b * 1e3, "mm"))
-        rows.append((f"Hertz peak pressure at {force:g} N", p_max / 1e6, "MPa"))
-    rows += _law_rows(clearance, table)
-    rows.append((f"sectors per surface ({clearance.wear_distribution})", clearance.sectors, ""))
-    return _filled(table, rows)
-
-
-def _slider_table(model: Model, joint: TranslationalJoint, y0: NDArray) -> Table:
-    """How a translational clearance joint is laid out, its contact law and its laws' keys."""
-    c = joint.clearance
-    table = Table(title=f"translational clearance joint '{joint.name}'", caption_justify="left")
+def _clearance_table(kind: ClearanceKind, joint: object, model: Model, y0: NDArray) -> Table:
+    """A clearance joint's layout and derived contact parameters, its laws with their keys."""
+    table = Table(title=kind.check_title(joint), caption_justify="left")
     for column in ("quantity", "value", "unit"):
         table.add_column(column, justify="right" if column == "value" else "left")
-    guide = joint.bodies[0]
-    phi = 0.0 if guide == "ground" else y0[3 * model.body_names.index(guide) + 2]
-    axis = math.degrees(math.atan2(*reversed(joint.axis)) + phi)
-    rows = [
-        ("gap on each side c", c.clearance_gap * 1e3, "mm"),
-        (f"guide (on '{guide}'): height", 2 * c.guide_half_height * 1e3, "mm"),
-        ("  length", "unbounded" if c.guide_length is None else c.guide_length * 1e3, "mm"),
-        ("  axis, from global x at the start", axis, "deg"),
-        (f"slider (on '{joint.bodies[1]}'): length", c.slider_length * 1e3, "mm"),
-        ("  height", c.slider_height * 1e3, "mm"),
-        ("contacts", "4 corners" + (" + 4 guide ends" if c.guide_length else ""), ""),
-        (f"contact stiffness K (n = {c.exponent:g})", c.stiffness, "N/m^n"),
-        ("contact modulus E*", c.contact_modulus / 1e9, "GPa"),
-    ]
-    if c.corner_radius is not None:
-        rows.append(("corner radius r (K = 4/3 E* sqrt(r))", c.corner_radius * 1e3, "mm"))
-    for share in PENETRATION_SHARES:
-        force, stiffness = c.elastic_force(share * c.clearance_gap)
-        rows.append((f"force F at delta = {share:.0%} of c", force / 1e3, "kN"))
-        rows.append(("stiffness dF/d(delta) there", stiffness, "N/m"))
-    rows += _law_rows(c, table)
-    rows.append(("segments per surface", c.segments, ""))
-    return _filled(table, rows)
+    rows = kind.check_rows(joint, model, y0)
+    return _filled(table, [*rows, *_law_rows(joint.clearance, table)])
 
 
 def _law_rows(clearance: ContactKeys, table: Table) -> list[tuple]:

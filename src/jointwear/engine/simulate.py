@@ -23,8 +23,8 @@ from ..model import Model
 from ..model.sections import FORMULATIONS
 from ..results import Results
 from ..results.cycles import CycleWindows, settling
+from ..results.derived import with_derived_columns
 from ..results.run_state import RunState
-from ..results.tribology import with_tribology
 from . import integrators
 from .contacts import Contacts
 from .drive import LoopArrays, Progress, drive
@@ -199,7 +199,7 @@ def simulate(
     report["provenance"] = origin
     return Results(
         model=model,
-        timeseries=with_tribology(model, pd.DataFrame(data, columns=columns)),
+        timeseries=with_derived_columns(model, pd.DataFrame(data, columns=columns)),
         events=pd.DataFrame(done.events, columns=["time", "event", "direction"]),
         summary=report,
         final=final,

@@ -1,21 +1,19 @@
-"""Animation of a mechanism from its results: bodies, ground points and clearance joints.
+"""Animation of a mechanism from its results: bodies, ground points and joints.
 
 Each body is drawn as a thick line through its points (closed for three or more), ground
-points as triangles, and each revolute clearance joint as a bearing circle and a journal
-circle whose offset from the bearing centre is magnified, so that the motion inside the joint
-shows (the paper's Fig. 6 does the same with an exaggerated clearance). Each translational
-clearance joint is drawn as its guide's two surfaces and the slider as a rectangle, the gap,
-the slider's lateral offset and its tilt magnified by the same factor (the tilt as an angle,
-so the corners meet the drawn surfaces about when they meet the true ones, for small
-angles); the slider's body, and the points of bodies pinned to it by ideal revolute joints,
-follow the drawn slider. An ideal translational joint, which has no size of its own, is drawn
-as a block of a set share of the mechanism's size between its guide's surfaces.
+points as triangles, and each joint type draws its joints (``ClearanceKind.animation_module``:
+a revolute clearance joint as a bearing and a journal circle, a translational one as its
+guide's surfaces and the slider's block). Every clearance is magnified by one factor, so that
+the motion inside the joints shows (the paper's Fig. 6 does the same with an exaggerated
+clearance); the points a joint's drawing moves, and those of bodies pinned to them by ideal
+joints, are drawn where it moves them.
 """
 
 from __future__ import annotations
 
 import math
 from collections.abc import Callable
+from importlib import import_module
 from io import BytesIO
 from pathlib import Path
 from typing import NamedTuple
@@ -25,20 +23,19 @@ import pandas as pd
 from matplotlib.animation import AbstractMovieWriter, FuncAnimation
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure  # figures without pyplot: no global backend switch
-from matplotlib.patches import Circle, Rectangle
 from PIL import Image
 
 from ..io import make_folder, write_atomic
+from ..joints import BY_NAME, KINDS
+from ..joints.kind import Actor
 from ..model import Model
-from ..model.sections import RevoluteJoint, TranslationalJoint
 from ..results import Results
+from .crank import crank_body
 from .plan import crank_driver
-from .slider import crank_body
+from .tracks import track
 
 NO_CRANK_SPAN = 0.04  # [s] the time animated when no constant-speed driver turns a crank
 CLEARANCE_SHARE = 0.04  # default: a radial clearance or a gap drawn as this share of the mechanism
-IDEAL_SLIDER_SHARE = 0.08  # an ideal translational joint's block: this share of the mechanism long
-IDEAL_SLIDER_ASPECT = 0.5  # and this share of its length high
 
 
 class _GifWriter(AbstractMovieWriter):
@@ -69,7 +66,7 @@ class _GifWriter(AbstractMovieWriter):
 def _frames(results: Results, turns: float, frames: int) -> pd.DataFrame:
     """Rows of the last ``turns`` crank turns (or ``NO_CRANK_SPAN``), ``frames`` of them at most.
 
-    The crank: a constant-speed driver's body, else a free crank (``slider.crank_body``).
+    The crank: a constant-speed driver's body, else a free crank (``crank.crank_body``).
     """
     df = results.timeseries
     crank = crank_driver(results)
@@ -85,23 +82,11 @@ def _frames(results: Results, turns: float, frames: int) -> pd.DataFrame:
     return window.iloc[rows.astype(int)]
 
 
-def _track(model: Model, rows: pd.DataFrame, body: str, point: str) -> np.ndarray:
-    """Global positions [m] of ``point`` of ``body`` over ``rows``, shape (rows, 2)."""
-    local = np.asarray(model.point(body, point), dtype=float)
-    if body == "ground":
-        return np.tile(local, (len(rows), 1))
-    phi = rows[f"phi_{body}"].to_numpy()
-    cos, sin = np.cos(phi), np.sin(phi)
-    x = rows[f"x_{body}"].to_numpy() + cos * local[0] - sin * local[1]
-    y = rows[f"y_{body}"].to_numpy() + sin * local[0] + cos * local[1]
-    return np.column_stack([x, y])
-
-
 def _outlines(model: Model, rows: pd.DataFrame, moved: dict) -> dict[str, np.ndarray]:
     """Per body, its points over ``rows``, shape (rows, points, 2); ``moved`` replaces some."""
     outlines = {}
     for body in model.bodies:
-        tracks = [moved.get((body.name, p), _track(model, rows, body.name, p)) for p in body.points]
+        tracks = [moved.get((body.name, p), track(model, rows, body.name, p)) for p in body.points]
         if not tracks:  # a body without points: its centre of mass
             tracks = [rows[[f"x_{body.name}", f"y_{body.name}"]].to_numpy()]
         if len(tracks) > 2:
@@ -110,21 +95,15 @@ def _outlines(model: Model, rows: pd.DataFrame, moved: dict) -> dict[str, np.nda
     return outlines
 
 
-def _angle(rows: pd.DataFrame, body: str) -> np.ndarray:
-    """Angle [rad] of ``body`` over ``rows`` (0 for the ground)."""
-    return np.zeros(len(rows)) if body == "ground" else rows[f"phi_{body}"].to_numpy()
-
-
 def _scale(model: Model, rows: pd.DataFrame, clearance_scale: float | None) -> float:
     """Magnification of the clearances [-]: ``clearance_scale`` if given.
 
-    By default the factor that draws the largest radial clearance or gap as
+    By default the factor that draws the largest clearance (``ClearanceKind.gap``) as
     ``CLEARANCE_SHARE`` of the mechanism's size (1 without clearance joints).
     """
     if clearance_scale is not None:
         return clearance_scale
-    gaps = [j.clearance.radial_clearance for j in model.joints_of("revolute")]
-    gaps += [j.clearance.clearance_gap for j in model.joints_of("translational")]
+    gaps = [kind.gap(joint) for kind in KINDS for joint in kind.joints(model)]
     if not gaps:
         return 1.0
     return CLEARANCE_SHARE * _size(_outlines(model, rows, {})) / max(gaps)
@@ -136,117 +115,11 @@ def _size(outlines: dict[str, np.ndarray]) -> float:
     return float(max(np.ptp(points, axis=0)))
 
 
-class SliderPose(NamedTuple):
-    """A translational joint as drawn over the frames (a clearance's gap, offset, tilt scaled)."""
-
-    centre: np.ndarray  # (frames, 2) slider's drawn centre [m]
-    angle: np.ndarray  # (frames,) slider axis' drawn angle from the global x axis [rad]
-    guide: np.ndarray  # (frames, 2 surfaces, 2 ends, 2) guide surfaces' drawn ends [m]
-    corners: np.ndarray  # (frames, 4, 2) slider rectangle's drawn corners [m]
-    size: tuple[float, float]  # the drawn slider's length and height [m]
-
-
-class _Guide(NamedTuple):
-    """A translational joint's guide over the frames: point, axis, normal, slide along it."""
-
-    point: np.ndarray  # (frames, 2) the guide body's joint point [m]
-    theta: np.ndarray  # (frames,) the guide axis' angle from the global x axis [rad]
-    u: np.ndarray  # (frames, 2) unit vector along the axis
-    v: np.ndarray  # (frames, 2) unit normal, u turned by +90 degrees
-    along: np.ndarray  # (frames,) the slider's joint point along the axis from the guide's [m]
-
-
-def _guide(model: Model, rows: pd.DataFrame, joint: TranslationalJoint) -> _Guide:
-    guide, slider = joint.bodies
-    g = _track(model, rows, guide, joint.points[0])
-    axis = np.asarray(joint.axis, dtype=float)
-    theta = _angle(rows, guide) + math.atan2(axis[1], axis[0])
-    u = np.column_stack([np.cos(theta), np.sin(theta)])
-    v = np.column_stack([-u[:, 1], u[:, 0]])
-    along = np.einsum("ij,ij->i", _track(model, rows, slider, joint.points[1]) - g, u)
-    return _Guide(g, theta, u, v, along)
-
-
-def _pose(
-    frame: _Guide, centre: np.ndarray, angle: np.ndarray, size: tuple[float, float],
-    half_width: float, ends: np.ndarray,
-) -> SliderPose:  # fmt: skip
-    """A slider of ``size`` at ``centre`` and ``angle``, between two guide surfaces.
-
-    The surfaces lie ``half_width`` off the guide's centreline, from ``ends[0]`` to
-    ``ends[1]`` along it [m].
-    """
-    g, u, v = frame.point, frame.u, frame.v
-    guide_ends = np.stack(
-        [np.stack([g + e * u + side * half_width * v for e in ends], axis=1) for side in (1, -1)],
-        axis=1,
-    )
-    a, b = 0.5 * size[0], 0.5 * size[1]
-    cos, sin = np.cos(angle)[:, None], np.sin(angle)[:, None]
-    corner = np.array([(-a, -b), (a, -b), (a, b), (-a, b)])
-    corners = np.stack(
-        [centre[:, 0:1] + cos * corner[:, 0] - sin * corner[:, 1],
-         centre[:, 1:2] + sin * corner[:, 0] + cos * corner[:, 1]], axis=2,
-    )  # fmt: skip
-    return SliderPose(centre, angle, guide_ends, corners, size)
-
-
-def _travel(frame: _Guide, length: float) -> np.ndarray:
-    """The ends [m] of an unbounded guide: the slider's travel over the frames."""
-    return np.array([frame.along.min() - 0.5 * length, frame.along.max() + 0.5 * length])
-
-
-def _slider_pose(
-    model: Model, rows: pd.DataFrame, joint: TranslationalJoint, scale: float
-) -> tuple[SliderPose, dict]:
-    """The drawn slider and guide of a clearance ``joint``, and the slider body's points.
-
-    The slider's centre lies at its true position along the guide and ``scale`` times its
-    lateral offset off the centreline; its axis at ``scale`` times its tilt to the guide's. The
-    guide's surfaces lie ``b + scale c`` off its centreline, over its length, or if unbounded
-    over the slider's travel in ``rows``. Returns the pose and {(body, point): track}.
-    """
-    slider = joint.bodies[1]
-    c = joint.clearance
-    frame = _guide(model, rows, joint)
-    lateral = rows[f"{joint.name}_lateral"].to_numpy()
-    tilt = rows[f"{joint.name}_tilt"].to_numpy()
-    centre = frame.point + frame.along[:, None] * frame.u + scale * lateral[:, None] * frame.v
-    size = (c.slider_length, c.slider_height)
-    ends = np.array([-0.5, 0.5]) * c.guide_length if c.guide_length else _travel(frame, size[0])
-    half_width = 0.5 * c.slider_height + scale * c.clearance_gap
-    pose = _pose(frame, centre, frame.theta + scale * tilt, size, half_width, ends)
-    # The slider body as drawn: turned by (scale - 1) tilt about its centre, moved with it.
-    centre_local = np.asarray(model.point(slider, joint.points[1]), dtype=float)
-    phi = _angle(rows, slider) + (scale - 1.0) * tilt
-    moved = {}
-    for name, local in model.body(slider).points.items():
-        dx, dy = np.asarray(local, dtype=float) - centre_local
-        moved[(slider, name)] = centre + np.column_stack(
-            [np.cos(phi) * dx - np.sin(phi) * dy, np.sin(phi) * dx + np.cos(phi) * dy]
-        )
-    return pose, moved
-
-
-def _ideal_slider_pose(
-    model: Model, rows: pd.DataFrame, joint: TranslationalJoint, length: float
-) -> SliderPose:
-    """An ideal translational joint: a block ``length`` [m] long on its guide's centreline.
-
-    Between guide surfaces over the block's travel in ``rows``: an ideal joint has no size of
-    its own.
-    """
-    frame = _guide(model, rows, joint)
-    size = (length, IDEAL_SLIDER_ASPECT * length)
-    centre = frame.point + frame.along[:, None] * frame.u
-    return _pose(frame, centre, frame.theta, size, 0.5 * size[1], _travel(frame, length))
-
-
 def _pinned(model: Model, moved: dict) -> dict:
-    """Points of other bodies pinned by ideal revolute joints to a moved point: moved alike."""
+    """Points of other bodies pinned by ideal joints to a moved point: moved alike."""
     pinned = {}
     for joint in model.joints:
-        if not isinstance(joint, RevoluteJoint) or joint.clearance is not None:
+        if joint.clearance is not None or not BY_NAME[joint.type].pins_points:
             continue
         ends = list(zip(joint.bodies, joint.points, strict=True))
         for here, there in (ends, ends[::-1]):
@@ -255,33 +128,25 @@ def _pinned(model: Model, moved: dict) -> dict:
     return pinned
 
 
-def _positions(
-    results: Results, rows: pd.DataFrame, clearance_scale: float | None
-) -> tuple[dict, dict, dict, dict, float]:
-    """Drawn positions over ``rows``: outlines, bearing and journal centres [m], sliders, scale.
-
-    A journal centre is drawn at the bearing centre plus ``scale`` times its offset; its
-    body's outline goes through it. Sliders: ``_slider_pose``.
-    """
-    model = results.model
-    joints = model.joints_of("revolute")
+def _actors(
+    model: Model, rows: pd.DataFrame, clearance_scale: float | None
+) -> tuple[list[Actor], list[str], float]:
+    """Every joint's drawing over ``rows``, the title's lines, and the magnification."""
     scale = _scale(model, rows, clearance_scale)
-    bearings = {j.name: _track(model, rows, j.bodies[0], j.points[0]) for j in joints}
-    journals = {
-        j.name: bearings[j.name] + scale * rows[[f"{j.name}_ex", f"{j.name}_ey"]].to_numpy()
-        for j in joints
-    }
-    sliders, moved = {}, {}
-    for joint in model.joints_of("translational"):
-        sliders[joint.name], points = _slider_pose(model, rows, joint, scale)
-        moved |= points
-    ideal = [j for j in model.joints if isinstance(j, TranslationalJoint) and j.clearance is None]
-    if ideal:
-        length = IDEAL_SLIDER_SHARE * _size(_outlines(model, rows, {}))
-        sliders |= {j.name: _ideal_slider_pose(model, rows, j, length) for j in ideal}
-    moved |= _pinned(model, moved)
-    moved |= {(j.bodies[1], j.points[1]): journals[j.name] for j in joints}
-    return _outlines(model, rows, moved), bearings, journals, sliders, scale
+    size = _size(_outlines(model, rows, {}))
+    actors, titles = [], []
+    for kind in KINDS:
+        if not kind.animation_module:
+            continue
+        drawing = import_module(kind.animation_module)
+        joints = kind.joints(model)
+        actors += [drawing.actor(model, rows, joint, scale, size) for joint in joints]
+        if joints:
+            titles.append(drawing.title(joints, scale))
+        if hasattr(drawing, "ideal_actor"):
+            ideal = [j for j in model.joints if j.type == kind.name and j.clearance is None]
+            actors += [drawing.ideal_actor(model, rows, joint, size) for joint in ideal]
+    return actors, titles, scale
 
 
 def _stage(model: Model, points: np.ndarray) -> tuple[Figure, Axes]:
@@ -323,44 +188,18 @@ def mechanism_scene(
     """The figure of ``save_animation`` and the function that draws its frames (same keys)."""
     model = results.model
     rows = _frames(results, turns, frames)
-    outlines, bearings, journals, sliders, scale = _positions(results, rows, clearance_scale)
-    drawn = [o.reshape(-1, 2) for o in outlines.values()]
-    drawn += [p.reshape(-1, 2) for s in sliders.values() for p in (s.guide, s.corners)]
+    actors, titles, scale = _actors(model, rows, clearance_scale)
+    moved = {}
+    for drawn_joint in actors:
+        moved |= drawn_joint.moved
+    outlines = _outlines(model, rows, moved | _pinned(model, moved))
+    drawn = [o.reshape(-1, 2) for o in outlines.values()] + [a.extent for a in actors]
     fig, ax = _stage(model, np.concatenate(drawn))
     lines = {
         name: ax.plot([], [], "-o", lw=5, ms=5, solid_capstyle="round", label=name, zorder=2)[0]
         for name in outlines
     }
-    circles = {}
-    for name in bearings:
-        c = model.joint(name).clearance
-        bearing_radius = c.journal_radius + scale * c.radial_clearance
-        circles[name] = (
-            ax.add_patch(Circle((0, 0), bearing_radius, fill=False, lw=1.5, ec="k", zorder=3)),
-            ax.add_patch(Circle((0, 0), c.journal_radius, fc="w", lw=1.5, ec="tab:red", zorder=4)),
-        )
-    guides, blocks = {}, {}
-    for name, pose in sliders.items():
-        guides[name] = [ax.plot([], [], "k-", lw=1.5, zorder=3)[0] for _ in range(2)]
-        blocks[name] = ax.add_patch(
-            Rectangle(
-                (0, 0), *pose.size, rotation_point="center",
-                fc="mistyrose", ec="tab:red", lw=1.5, alpha=0.8, zorder=1.5,
-            )
-        )  # fmt: skip
-    titles = []
-    if circles:
-        c_mm = max(model.joint(name).clearance.radial_clearance for name in circles) * 1e3
-        titles.append(
-            f"clearance joints: journal offset × {scale:.3g} "
-            f"(c = {c_mm:.3g} mm drawn as {c_mm * scale:.3g} mm)"
-        )
-    if model.joints_of("translational"):
-        gap_mm = max(j.clearance.clearance_gap for j in model.joints_of("translational")) * 1e3
-        titles.append(
-            f"sliders: gap, offset and tilt × {scale:.3g} "
-            f"(gap {gap_mm:.3g} mm drawn as {gap_mm * scale:.3g} mm)"
-        )
+    draws = [drawn_joint.setup(ax) for drawn_joint in actors]
     if titles:
         ax.set_title("\n".join(titles), fontsize="small")
     ax.legend(loc="upper right", fontsize="small")
@@ -370,16 +209,8 @@ def mechanism_scene(
     def draw(frame: int) -> None:
         for name, line in lines.items():
             line.set_data(outlines[name][frame, :, 0], outlines[name][frame, :, 1])
-        for name, (bearing, journal) in circles.items():
-            bearing.set_center(bearings[name][frame])
-            journal.set_center(journals[name][frame])
-        for name, pose in sliders.items():
-            for surface, line in enumerate(guides[name]):
-                line.set_data(pose.guide[frame, surface, :, 0], pose.guide[frame, surface, :, 1])
-            block = blocks[name]
-            half = 0.5 * np.array([block.get_width(), block.get_height()])
-            block.set_xy(pose.centre[frame] - half)
-            block.set_angle(math.degrees(pose.angle[frame]))
+        for draw_joint in draws:
+            draw_joint(frame)
         clock.set_text(f"t = {times[frame]:.4f} s")
 
     return Scene(fig, draw, times, scale)
@@ -396,11 +227,12 @@ def save_animation(
 ) -> Path:
     """Write a GIF of the mechanism over the last ``turns`` crank turns; return its path.
 
-    Without a crank (a constant-speed driver's body or a free crank, ``slider.crank_body``),
+    Without a crank (a constant-speed driver's body or a free crank, ``crank.crank_body``),
     the last ``NO_CRANK_SPAN`` seconds. ``frames``: at most this many, evenly spaced in time.
-    ``clearance_scale`` [-]: factor on each journal's offset from its bearing centre (bearing
-    circles grow to match) and on each slider's gap, lateral offset and tilt; by default the
-    largest radial clearance or gap shows as ``CLEARANCE_SHARE`` of the mechanism's size.
+    ``clearance_scale`` [-]: factor on each clearance joint's motion inside its gap (a
+    journal's offset from its bearing centre, bearing circles growing to match; a slider's
+    gap, lateral offset and tilt); by default the largest clearance shows as
+    ``CLEARANCE_SHARE`` of the mechanism's size.
     """
     scene = mechanism_scene(results, turns=turns, frames=frames, clearance_scale=clearance_scale)
     out = Path(path)

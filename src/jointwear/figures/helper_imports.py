@@ -30,7 +30,13 @@ _watched = int(_command) if _command.isdigit() else os.getppid()
 _watcher = threading.Thread(target=_exit_if_orphaned, args=(_watched, _imported), daemon=True)
 _watcher.start()
 
-from . import clearance, run, slider  # noqa: E402, F401  (the plotting modules a Drawing names)
+from importlib import import_module  # noqa: E402
+
+from ..joints import KINDS  # noqa: E402
+from . import run  # noqa: E402, F401  (the plotting modules a Drawing names)
+
+for _kind in KINDS:
+    import_module(_kind.figures_module)
 
 _imported.set()
 _watcher.join()  # no thread is left when the server forks the helpers

@@ -10,7 +10,7 @@ from __future__ import annotations
 from importlib import import_module
 from typing import TYPE_CHECKING, Any, NamedTuple
 
-from .names import CLEARANCE_FIGURES, SLIDER_FIGURES
+from ..joints import KINDS, ClearanceKind
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -18,19 +18,14 @@ if TYPE_CHECKING:
     from ..results import Results
 
 CRANK_FUNCTIONS = ("constant_speed",)  # driver functions that turn a crank
-CLEARANCE_PLOTS = (  # in the order of CLEARANCE_FIGURES (clearance.py)
-    "plot_dynamics",
-    "plot_orbit",
-    "plot_wear_sectors",
-    "plot_wear_polar",
-    "plot_wear_profile",
-)
-SLIDER_PLOTS = ("plot_slider_motion", "plot_corner_forces", "plot_guide_wear")  # slider.py
-WITH_IDEAL = frozenset({"fig7_dynamics"})  # figures that compare with the ideal companion run
+RUN_FIGURES = "jointwear.figures.run"  # the figures of every run
+WITH_IDEAL = frozenset(
+    name for kind in KINDS for name in kind.figures_with_ideal
+)  # figures that compare with the ideal companion run
 
 
 class Drawing(NamedTuple):
-    """One figure: ``jointwear.figures.<module>.<function>(*args)``, called when drawn."""
+    """One figure: ``<module>.<function>(*args)`` (a module's full name), called when drawn."""
 
     module: str
     function: str
@@ -38,7 +33,7 @@ class Drawing(NamedTuple):
 
     def __call__(self) -> Figure:
         """Import the plotting function's module here, and draw."""
-        plot = getattr(import_module(f"{__package__}.{self.module}"), self.function)
+        plot = getattr(import_module(self.module), self.function)
         return plot(*self.args)
 
 
@@ -53,34 +48,32 @@ def crank_driver(results: Results) -> tuple[str, str, float] | None:
 def figure_plan(results: Results, ideal: Results | None = None) -> dict[str, Drawing]:
     """Every figure that applies to ``results``, by file name without ``.png``.
 
-    The energy; with a crank, one turn; with revolute clearance joints the paper's Fig. 7-10
-    (``ideal``: the same mechanism with ideal joints, for Fig. 7); with translational
-    clearance joints the slider's motion, corner forces and wear.
+    The energy; with a crank, one turn; then each joint type's with clearance (for a
+    revolute joint the paper's Figs. 7-10, with ``ideal``, the same mechanism with ideal
+    joints, for Fig. 7; for a translational one the slider's motion, corner forces and wear).
     """
-    plan = {"energy": Drawing("run", "plot_energy", (results,))}
+    plan = {"energy": Drawing(RUN_FIGURES, "plot_energy", (results,))}
     if crank_driver(results) is not None:
-        plan["cycle"] = Drawing("run", "plot_cycle", (results,))
-    return {**plan, **clearance_drawings(results, ideal), **slider_drawings(results)}
+        plan["cycle"] = Drawing(RUN_FIGURES, "plot_cycle", (results,))
+    for kind in KINDS:
+        plan |= kind_drawings(kind, results, ideal)
+    return plan
 
 
-def clearance_drawings(results: Results, ideal: Results | None = None) -> dict[str, Drawing]:
-    """The revolute clearance figures (paper Figs. 7-10) by file name; none without such joints.
+def kind_drawings(
+    kind: ClearanceKind, results: Results, ideal: Results | None = None
+) -> dict[str, Drawing]:
+    """The figures of ``kind`` by file name; none without joints of that kind.
 
-    ``ideal``: the same mechanism with ideal joints, for the comparison of Fig. 7 (a)-(c).
+    ``ideal``: the same mechanism with ideal joints, for the figures that compare with it.
     """
-    if not results.model.joints_of("revolute"):
+    if not kind.joints(results.model):
         return {}
     return {
-        name: Drawing("clearance", plot, (results, ideal) if name in WITH_IDEAL else (results,))
-        for name, plot in zip(CLEARANCE_FIGURES, CLEARANCE_PLOTS, strict=True)
-    }
-
-
-def slider_drawings(results: Results) -> dict[str, Drawing]:
-    """The slider figures by file name; none without translational clearance joints."""
-    if not results.model.joints_of("translational"):
-        return {}
-    return {
-        name: Drawing("slider", plot, (results,))
-        for name, plot in zip(SLIDER_FIGURES, SLIDER_PLOTS, strict=True)
+        name: Drawing(
+            kind.figures_module,
+            plot,
+            (results, ideal) if name in kind.figures_with_ideal else (results,),
+        )
+        for name, plot in kind.figures
     }

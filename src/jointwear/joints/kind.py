@@ -10,12 +10,19 @@ a kind. A kind gives:
    arrays in a ``RunState`` and in the run's tables; ``kernel``: its compiled module's name.
 2. ``row(joint, model, bodies, angle0)``: its row of the kernel tables (integers and SI
    parameters); ``start_problems``: why a joint cannot start from the assembled pose.
-3. ``columns(joint)``: its time-series columns (without the joint's name).
+3. ``columns(joint)``: its time-series columns (without the joint's name);
+   ``derived_columns``: those computed from them after the run (they follow them);
+   ``unit(quantity)``: the unit of each.
 4. ``wear_rows``, ``wear_position``: its rows of the wear table and the column naming where
    along a surface a row is; ``impact_row``, ``impact_columns``: its rows of the impact table.
 5. ``summary(joint, totals, wear, duration)``: its figures in ``summary.json``.
 6. ``peaks`` and ``energies``: which of its totals are running peaks and dissipated energies
    (totals 0-7 mean the same in every kind: ``TOTALS``).
+7. ``check_rows``: its rows in ``jointwear check``.
+8. ``figures``: its figures, each a file name and a function ``Results -> Figure`` of
+   ``figures_module`` (its ``figures.py``), which also has ``save_figures(results, folder)``;
+   ``animation_module``: how the animation draws its joints (an ``Actor`` each), with
+   ``gap(joint)`` magnified. Both modules import matplotlib, and only they in the kind.
 
 The kernel module gives ``make_tables(ints, params, snapshots)`` -> (table, state, log,
 scratch), ``N_INTS``, ``N_PARAMS``, ``N_IMPACT_INFO``, ``SLOTS`` (contact slots per joint) and
@@ -27,12 +34,13 @@ from __future__ import annotations
 from collections.abc import Callable
 from importlib import import_module
 from types import ModuleType
-from typing import Any
+from typing import Any, NamedTuple
 
 import numpy as np
 from numpy.typing import NDArray
 
 # The totals every kind keeps in its first columns, by index (kernels/elements/*.py T_*).
+PENETRATION_SHARES = (0.01, 0.1, 0.4)  # of the gap, where ``check`` shows the contact law
 TOTALS = {
     "contact_time": 0,  # time with a positive normal force [s]
     "max_fn": 1,  # largest normal force [N]
@@ -46,6 +54,14 @@ TOTALS = {
 STATE_FIELDS = ("contact_on", "impact_speed", "wear")  # a kind's restart arrays, kernel names
 
 
+class Actor(NamedTuple):
+    """A joint in the animation (``figures.animation``)."""
+
+    moved: dict  # {(body, point): (frames, 2) positions [m]} the joint's drawing moves
+    extent: np.ndarray  # (k, 2) points it draws [m], for the axes' limits
+    setup: Callable  # (Axes) -> draw(frame): adds its artists, returns what moves them
+
+
 class ClearanceKind:
     """A joint type with clearance (the module docstring lists what it gives)."""
 
@@ -54,6 +70,13 @@ class ClearanceKind:
     wear_position: str = ""  # wear table column of a row's place on its surface
     impact_columns: tuple[str, ...] = ()  # impact table columns of its own
     energies: tuple[int, ...] = (TOTALS["damping_energy"], TOTALS["friction_energy"])
+    derived_after: str = ""  # the own column its derived columns follow (default: the last)
+    figures_module: str = ""  # the module of its figures (matplotlib; imported to draw)
+    figures: tuple[tuple[str, str], ...] = ()  # (file name without .png, plotting function)
+    figures_with_ideal: frozenset[str] = frozenset()  # figures given the ideal run too
+    animation_module: str = ""  # its drawing in the animation: ``actor``, ``title``, and
+    # ``ideal_actor`` if its ideal joints have a drawing of their own
+    pins_points: bool = False  # whether its ideal joint holds its two points together
 
     @property
     def module(self) -> ModuleType:
@@ -64,6 +87,10 @@ class ClearanceKind:
     def peaks(self) -> tuple[int, ...]:
         """Columns of the totals that are running peaks (the rest are sums)."""
         return (TOTALS["max_fn"], TOTALS["max_delta"])
+
+    def gap(self, joint: Any) -> float:
+        """The joint's clearance [m]: what the animation magnifies, wear grows."""
+        raise NotImplementedError
 
     def joints(self, model: Any) -> tuple:
         """``model``'s joints of this kind with clearance, in file order (the kernels' order)."""
@@ -90,6 +117,25 @@ class ClearanceKind:
 
     def columns(self, joint: Any) -> tuple[str, ...]:
         """The joint's time-series columns, without its name."""
+        raise NotImplementedError
+
+    def derived_columns(self, joint: Any, timeseries: Any) -> dict[str, NDArray[np.float64]]:
+        """Columns computed from the joint's rows after the run, by full name; none by default."""
+        return {}
+
+    def unit(self, quantity: str) -> str | None:
+        """The unit (UDUNITS) of one of its columns, without the joint's name; None if unknown."""
+        return None
+
+    def check_title(self, joint: Any) -> str:
+        """The title of the joint's table in ``jointwear check``."""
+        return f"{self.name} clearance joint '{joint.name}'"
+
+    def check_rows(self, joint: Any, model: Any, y0: NDArray[np.float64]) -> list[tuple]:
+        """(quantity, value, unit) rows of ``jointwear check``: layout, contact law.
+
+        The laws and their keys follow them; ``y0``: the assembled start.
+        """
         raise NotImplementedError
 
     def wear_rows(self, joint: Any, wear: NDArray[np.float64]) -> list[tuple]:

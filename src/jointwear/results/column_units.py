@@ -3,8 +3,9 @@
 Time-series columns are named after the model's bodies, drivers and joints
 (``system.column_names``): ``<quantity>_<body>`` (``phi_follower``), ``torque_<driver>``,
 ``load_<load>_<quantity>`` (``load_gas_fx``), ``<joint>_<quantity>``
-(``coupler_follower_fn``); the model's own names tell where the prefix or suffix ends, so a
-body or joint name with underscores is read right. The other tables' columns end in their
+(``coupler_follower_fn``, its unit from the joint type: ``ClearanceKind.unit``); the model's
+own names tell where the prefix or suffix ends, so a body or joint name with underscores is
+read right. The other tables' columns end in their
 unit (``depth_m``, ``angle_deg``, ``worn_volume_m3``).
 
 Units are written as UDUNITS (netCDF's ``units`` attribute) reads them: ``m``, ``m/s``,
@@ -14,6 +15,7 @@ Units are written as UDUNITS (netCDF's ``units`` attribute) reads them: ``m``, `
 
 from __future__ import annotations
 
+from ..joints import BY_NAME
 from ..mechanism.system import load_columns
 from ..model import Model
 
@@ -32,34 +34,7 @@ BODY = {
 }  # <quantity>_<body>: system.BODY_COLUMNS
 DRIVER = {"torque": "N m", "force": "N"}  # <kind>_<driver>
 LOAD = {"fx": "N", "fy": "N", "force": "N", "torque": "N m"}  # system.LOAD_QUANTITIES
-JOINT = {
-    "fx": "N",  # reaction (ideal joint) or contact force (clearance joint) on the second body
-    "fy": "N",
-    "ex": "m",  # journal's eccentricity in its bearing
-    "ey": "m",
-    "delta": "m",  # penetration
-    "fn": "N",  # normal contact force
-    "ft": "N",  # friction force
-    "eps": "1",  # eccentricity ratio (lubricated journal)
-    "film_min": "m",  # minimum film thickness
-    "film_fx": "N",
-    "film_fy": "N",
-    "film_torque": "N m",
-    "film_power": "W",
-    "vt": "m/s",  # sliding speed at the contact point
-    "theta_bearing": "rad",  # direction of the contact normal in the bearing's frame
-    "theta_journal": "rad",  # and in the journal's frame
-    "p_max": "Pa",  # Hertz line contact's peak pressure (results.tribology)
-    "p_mean": "Pa",
-    "pv": "Pa m/s",
-    "friction_power": "W",
-    "delta_dot": "m/s",  # penetration rate
-    "fn_elastic": "N",  # the normal force's elastic (undamped) part
-    "damping_power": "W",
-    "lateral": "m",  # slider's offset across its guide
-    "tilt": "rad",  # slider's tilt in its guide
-}  # <joint>_<quantity>; a slider's corner and edge forces are <joint>_fn_<contact> [N],
-# their sliding speeds <joint>_vt_<contact> [m/s]
+IDEAL_JOINT = {"fx": "N", "fy": "N"}  # <joint>_<quantity>: an ideal joint's reaction
 NAMED = {
     "time": "s",
     "constraint_violation": "m",  # 2-norm of the position constraints (m, and rad for angles)
@@ -132,16 +107,13 @@ def _model_unit(column: str, model: Model) -> str | None:
     for kind, unit in DRIVER.items():
         if column.startswith(f"{kind}_") and column[len(kind) + 1 :] in drivers:
             return unit
-    for joint in sorted((j.name for j in model.joints), key=len, reverse=True):
-        if not column.startswith(f"{joint}_"):
+    for joint in sorted(model.joints, key=lambda j: len(j.name), reverse=True):
+        if not column.startswith(f"{joint.name}_"):
             continue
-        quantity = column[len(joint) + 1 :]
-        if quantity in JOINT:
-            return JOINT[quantity]
-        if quantity.startswith("fn_"):  # a slider's contact force
-            return "N"
-        if quantity.startswith("vt_"):  # and the sliding speed there
-            return "m/s"
+        quantity = column[len(joint.name) + 1 :]
+        if joint.clearance is None:
+            return IDEAL_JOINT.get(quantity)
+        return BY_NAME[joint.type].unit(quantity)
     return None
 
 

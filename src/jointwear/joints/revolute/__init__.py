@@ -14,9 +14,35 @@ import numpy as np
 from numpy.typing import NDArray
 from typing_extensions import override
 
-from ..kind import ClearanceKind, common_figures, deepest
+from ..kind import PENETRATION_SHARES, ClearanceKind, common_figures, deepest
 
+HERTZ_REFERENCE_FORCES = (100.0, 1000.0)  # loads at which `check` shows the Hertz patch [N]
 SURFACES = ("bearing", "journal")  # the first index of the kernel's wear array
+UNITS = {
+    "fx": "N",  # contact force on the journal
+    "fy": "N",
+    "ex": "m",  # eccentricity of the journal in its bearing
+    "ey": "m",
+    "delta": "m",  # penetration
+    "fn": "N",  # normal contact force
+    "ft": "N",  # friction force
+    "vt": "m/s",  # sliding speed at the contact point
+    "theta_bearing": "rad",  # direction of the contact normal in the bearing's frame
+    "theta_journal": "rad",  # and in the journal's frame
+    "delta_dot": "m/s",  # penetration rate
+    "fn_elastic": "N",  # the normal force's elastic (undamped) part
+    "eps": "1",  # eccentricity ratio (lubricated)
+    "film_min": "m",  # minimum film thickness
+    "film_fx": "N",
+    "film_fy": "N",
+    "film_torque": "N m",
+    "film_power": "W",
+    "p_max": "Pa",  # Hertz line contact's peak and mean pressure (tribology.py)
+    "p_mean": "Pa",
+    "pv": "Pa m/s",
+    "friction_power": "W",
+    "damping_power": "W",
+}
 
 
 class RevoluteKind(ClearanceKind):
@@ -26,6 +52,18 @@ class RevoluteKind(ClearanceKind):
     kernel = "journal"
     wear_position = "angle_deg"
     impact_columns = ("bearing_angle_deg", "journal_angle_deg")
+    derived_after = "fn_elastic"  # before a lubricated joint's film columns
+    figures_module = f"{__name__}.figures"
+    animation_module = f"{__name__}.animation"
+    pins_points = True
+    figures = (  # the paper's Figs. 7-10
+        ("fig7_dynamics", "plot_dynamics"),
+        ("fig7d_orbit", "plot_orbit"),
+        ("fig8_wear_sectors", "plot_wear_sectors"),
+        ("fig9_wear_polar", "plot_wear_polar"),
+        ("fig10_profile", "plot_wear_profile"),
+    )
+    figures_with_ideal = frozenset({"fig7_dynamics"})
 
     @property
     @override
@@ -37,6 +75,10 @@ class RevoluteKind(ClearanceKind):
     @override
     def energies(self) -> tuple[int, ...]:
         return (*super().energies, self.module.T_FILM_ENERGY)
+
+    @override
+    def gap(self, joint: object) -> float:
+        return joint.clearance.radial_clearance
 
     @override
     def row(
@@ -84,6 +126,43 @@ class RevoluteKind(ClearanceKind):
         jc = self.module
         film = jc.FILM_OUTPUT_NAMES if joint.clearance.lubrication != "none" else ()
         return (*jc.OUTPUT_NAMES, *film)
+
+    @override
+    def derived_columns(self, joint: object, timeseries: object) -> dict[str, NDArray[np.float64]]:
+        from .tribology import tribology_columns  # pandas
+
+        return tribology_columns(joint, timeseries)
+
+    @override
+    def unit(self, quantity: str) -> str | None:
+        return UNITS.get(quantity)
+
+    @override
+    def check_title(self, joint: object) -> str:
+        return f"clearance joint '{joint.name}'"
+
+    @override
+    def check_rows(self, joint: object, model: object, y0: NDArray[np.float64]) -> list[tuple]:
+        clearance = joint.clearance
+        rows = [("radial clearance c = R_B - R_J", clearance.radial_clearance * 1e3, "mm")]
+        if clearance.normal_law == "hertz":
+            rows.append(
+                (f"contact stiffness K (n = {clearance.exponent:g})", clearance.stiffness, "N/m^n")
+            )
+        rows += [
+            ("contact modulus E*", clearance.contact_modulus / 1e9, "GPa"),
+            ("relative radius R* = R_B R_J / c", clearance.relative_radius, "m"),
+        ]
+        for share in PENETRATION_SHARES:
+            force, stiffness = clearance.elastic_force(share * clearance.radial_clearance)
+            rows.append((f"force F at delta = {share:.0%} of c", force / 1e3, "kN"))
+            rows.append(("stiffness dF/d(delta) there", stiffness, "N/m"))
+        for force in HERTZ_REFERENCE_FORCES:
+            b, p_max = clearance.hertz_patch(force)
+            rows.append((f"Hertz half-width b at {force:g} N", b * 1e3, "mm"))
+            rows.append((f"Hertz peak pressure at {force:g} N", p_max / 1e6, "MPa"))
+        cells = f"sectors per surface ({clearance.wear_distribution})"
+        return [*rows, (cells, clearance.sectors, "")]
 
     @override
     def wear_rows(self, joint: object, wear: NDArray[np.float64]) -> list[tuple]:

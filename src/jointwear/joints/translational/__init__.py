@@ -10,13 +10,23 @@ positive along the axis). Impact rows: the contact (a corner or a guide edge,
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 from numpy.typing import NDArray
 from typing_extensions import override
 
-from ..kind import ClearanceKind, common_figures, deepest
+from ..kind import PENETRATION_SHARES, ClearanceKind, common_figures, deepest
 
 SURFACES = ("guide_top", "guide_bottom", "slider_top", "slider_bottom")  # the kernel's order
+UNITS = {
+    "lateral": "m",  # the slider's offset across its guide
+    "tilt": "rad",  # and its tilt in it
+    "fx": "N",  # contact force on the slider
+    "fy": "N",
+    "friction_power": "W",
+    "damping_power": "W",
+}  # and per contact: fn_<contact> [N], vt_<contact> [m/s]
 
 
 def surfaces(joint: object) -> dict[str, float]:
@@ -39,6 +49,18 @@ class TranslationalKind(ClearanceKind):
     kernel = "slider"
     wear_position = "position_m"
     impact_columns = ("contact", "guide_position_m")
+    figures_module = f"{__name__}.figures"
+    animation_module = f"{__name__}.animation"
+    pins_points = False
+    figures = (
+        ("slider_motion", "plot_slider_motion"),
+        ("slider_corner_forces", "plot_corner_forces"),
+        ("slider_wear", "plot_guide_wear"),
+    )
+
+    @override
+    def gap(self, joint: object) -> float:
+        return joint.clearance.clearance_gap
 
     @override
     def row(
@@ -107,6 +129,43 @@ class TranslationalKind(ClearanceKind):
     @override
     def columns(self, joint: object) -> tuple[str, ...]:
         return self.module.output_names(joint.clearance.guide_length is not None)
+
+    @override
+    def unit(self, quantity: str) -> str | None:
+        if quantity.startswith("fn_"):
+            return "N"
+        if quantity.startswith("vt_"):
+            return "m/s"
+        return UNITS.get(quantity)
+
+    @override
+    def check_title(self, joint: object) -> str:
+        return f"translational clearance joint '{joint.name}'"
+
+    @override
+    def check_rows(self, joint: object, model: object, y0: NDArray[np.float64]) -> list[tuple]:
+        c = joint.clearance
+        guide = joint.bodies[0]
+        phi = 0.0 if guide == "ground" else y0[3 * model.body_names.index(guide) + 2]
+        axis = math.degrees(math.atan2(*reversed(joint.axis)) + phi)
+        rows = [
+            ("gap on each side c", c.clearance_gap * 1e3, "mm"),
+            (f"guide (on '{guide}'): height", 2 * c.guide_half_height * 1e3, "mm"),
+            ("  length", "unbounded" if c.guide_length is None else c.guide_length * 1e3, "mm"),
+            ("  axis, from global x at the start", axis, "deg"),
+            (f"slider (on '{joint.bodies[1]}'): length", c.slider_length * 1e3, "mm"),
+            ("  height", c.slider_height * 1e3, "mm"),
+            ("contacts", "4 corners" + (" + 4 guide ends" if c.guide_length else ""), ""),
+            (f"contact stiffness K (n = {c.exponent:g})", c.stiffness, "N/m^n"),
+            ("contact modulus E*", c.contact_modulus / 1e9, "GPa"),
+        ]
+        if c.corner_radius is not None:
+            rows.append(("corner radius r (K = 4/3 E* sqrt(r))", c.corner_radius * 1e3, "mm"))
+        for share in PENETRATION_SHARES:
+            force, stiffness = c.elastic_force(share * c.clearance_gap)
+            rows.append((f"force F at delta = {share:.0%} of c", force / 1e3, "kN"))
+            rows.append(("stiffness dF/d(delta) there", stiffness, "N/m"))
+        return [*rows, ("segments per surface", c.segments, "")]
 
     @override
     def wear_rows(self, joint: object, wear: NDArray[np.float64]) -> list[tuple]:

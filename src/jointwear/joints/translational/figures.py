@@ -1,6 +1,6 @@
 """Figures of the translational clearance joints: a slider in a guide with a gap.
 
-Functions ``Results -> matplotlib Figure`` and ``save_slider_figures`` that writes them all.
+Functions ``Results -> matplotlib Figure`` and ``save_figures`` that writes them all.
 As in the time series (``results.slider``): the lateral offset is the slider centre's from
 the guide's centreline along the guide's normal, the tilt the slider's angle relative to the
 guide's from the initial pose; "front" is the guide's +axis side, "top" its +normal side.
@@ -11,26 +11,24 @@ from __future__ import annotations
 
 import math
 from pathlib import Path
-from typing import NamedTuple
 
 import numpy as np
 import pandas as pd
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure  # figures without pyplot: no global backend switch
-from matplotlib.ticker import MultipleLocator
 
-from ..model.sections import RevoluteJoint, TranslationalJoint
-from ..model.slide_clearance import SlideClearance
-from ..results import Results
-from .files import save_pngs
-from .legends import LEGEND_ROOM, legend_beside
-from .plan import crank_driver, slider_drawings
-from .scaling import length_unit
+from ...figures.crank import crank_abscissa, set_abscissa
+from ...figures.files import save_pngs
+from ...figures.legends import LEGEND_ROOM, legend_beside
+from ...figures.plan import kind_drawings
+from ...figures.scaling import length_unit
+from ...model.sections import TranslationalJoint
+from ...model.slide_clearance import SlideClearance
+from ...results import Results
+from . import KIND
 
 MM = 1e3  # [mm/m]
 MRAD = 1e3  # [mrad/rad]
-TURN = 360.0  # [deg]
-MAX_TURN_TICKS = 8  # more crank turns than this: a tick every few turns
 NEAR_LIMIT = 0.25  # the tilt limits are drawn when the tilt comes within this share of them
 # The corner panels as the slider is seen with its guide's axis to the right.
 CORNER_GRID = (("rear_top", "front_top"), ("rear_bottom", "front_bottom"))
@@ -38,59 +36,6 @@ CORNER_COLOR = "tab:blue"
 EDGE_COLOR = "tab:red"
 SURFACE_COLORS = {"top": "tab:blue", "bottom": "tab:orange"}
 SNAPSHOT_ALPHA = 0.35
-
-
-class Abscissa(NamedTuple):
-    """The x axis of the time plots: the crank angle turned [deg], or time [s]."""
-
-    values: np.ndarray  # one per time-series row
-    label: str
-    crank: str | None  # the crank body, None when against time
-
-
-def crank_body(results: Results) -> str | None:
-    """The crank body, or None.
-
-    The body a constant-speed driver turns, else the first body joined to the ground by a
-    revolute joint whose angle spans more than one turn in the run.
-    """
-    crank = crank_driver(results)
-    if crank is not None:
-        return crank[1]
-    df = results.timeseries
-    for joint in results.model.joints:
-        if isinstance(joint, RevoluteJoint) and "ground" in joint.bodies:
-            body = joint.bodies[1] if joint.bodies[0] == "ground" else joint.bodies[0]
-            phi = df[f"phi_{body}"]
-            if phi.max() - phi.min() > 2.0 * math.pi:
-                return body
-    return None
-
-
-def crank_abscissa(results: Results) -> Abscissa:
-    """The crank angle turned since the run's start [deg] (positive either way), or time [s]."""
-    df = results.timeseries
-    body = crank_body(results)
-    if body is None:
-        return Abscissa(df["time"].to_numpy(), "time [s]", None)
-    phi = df[f"phi_{body}"].to_numpy()
-    turned = np.degrees(phi - phi[0])
-    if turned[-1] < 0.0:
-        turned = -turned
-    label = f"{body} angle turned since t = {df['time'].iloc[0]:.4g} s [deg]"
-    return Abscissa(turned, label, body)
-
-
-def _set_abscissa(ax: Axes, x: Abscissa) -> None:
-    """Label the bottom x axis; crank angle ticks every turn (or every few), minor every 90°."""
-    ax.set_xlabel(x.label)
-    if x.crank is None:
-        return
-    turns = max(float(np.max(x.values)) / TURN, 1.0)
-    step = TURN * math.ceil(turns / MAX_TURN_TICKS)
-    ax.xaxis.set_major_locator(MultipleLocator(step))
-    if step == TURN:
-        ax.xaxis.set_minor_locator(MultipleLocator(TURN / 4.0))
 
 
 def _joints(results: Results) -> tuple[TranslationalJoint, ...]:
@@ -163,7 +108,7 @@ def plot_slider_motion(results: Results) -> Figure:
     for ax in axes:
         ax.axhline(0.0, color="0.6", lw=0.6)
         ax.grid(alpha=0.3)
-    _set_abscissa(axes[-1], x)
+    set_abscissa(axes[-1], x)
     fig.suptitle(f"{results.model.name}: slider motion in the guide")
     return fig
 
@@ -201,7 +146,7 @@ def plot_corner_forces(results: Results) -> Figure:
                 ax.grid(alpha=0.3)
             axes[2 * k + r, 0].set_ylabel("normal force [N]")
     for ax in axes[-1]:
-        _set_abscissa(ax, x)
+        set_abscissa(ax, x)
     fig.suptitle(f"{results.model.name}: normal contact forces on the slider")
     return fig
 
@@ -285,6 +230,6 @@ def plot_guide_wear(results: Results) -> Figure:
     return fig
 
 
-def save_slider_figures(results: Results, folder: str | Path) -> list[Path]:
+def save_figures(results: Results, folder: str | Path) -> list[Path]:
     """Write the slider figures into ``folder`` as PNG; return the paths (none without sliders)."""
-    return save_pngs(slider_drawings(results), Path(folder))
+    return save_pngs(kind_drawings(KIND, results), Path(folder))

@@ -1,7 +1,7 @@
 """Figures of the revolute clearance joints: P. Flores, Mech. Mach. Theory 44 (2009), section 6.
 
 Functions ``Results -> matplotlib Figure``, one per figure of the paper (Figs. 7-10), and
-``save_clearance_figures`` that writes them all. Angles on a joint surface are measured
+``save_figures`` that writes them all. Angles on a joint surface are measured
 counter-clockwise in that surface's body frame from the body's x axis, as in the wear table.
 """
 
@@ -16,12 +16,13 @@ from matplotlib import colormaps
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure  # figures without pyplot: no global backend switch
 
-from ..model.sections import RevoluteJoint
-from ..results import Results
-from .files import save_pngs
-from .legends import LEGEND_ROOM, legend_beside
-from .plan import clearance_drawings, crank_driver
-from .scaling import length_unit
+from ...figures.files import save_pngs
+from ...figures.legends import LEGEND_ROOM, legend_beside
+from ...figures.plan import crank_driver, kind_drawings
+from ...figures.scaling import length_unit
+from ...model.sections import RevoluteJoint
+from ...results import Results
+from . import KIND
 
 PROFILE_SHARE = 0.15  # Fig. 10: the largest wear depth is drawn as this share of the radius
 STILL_ANGLE = 1e-6  # [rad] a body whose angle spans less does not rotate (a slider)
@@ -360,8 +361,6 @@ def plot_wear_profile(results: Results) -> Figure:
     return fig
 
 
-def save_clearance_figures(
-    results: Results, folder: str | Path, ideal: Results | None = None
-) -> list[Path]:
+def save_figures(results: Results, folder: str | Path, ideal: Results | None = None) -> list[Path]:
     """Write the clearance figures into ``folder`` as PNG; return the paths."""
-    return save_pngs(clearance_drawings(results, ideal), Path(folder))
+    return save_pngs(kind_drawings(KIND, results, ideal), Path(folder))

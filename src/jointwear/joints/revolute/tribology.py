@@ -1,0 +1,47 @@
+"""A revolute clearance joint's time series a tribologist reads: pressure, pV, power.
+
+From each row's normal and friction force and sliding speed (the joint's own columns):
+
+- ``<joint>_p_max``, ``<joint>_p_mean`` [Pa]: the peak and mean pressure of a Hertz line
+  contact of the nominal radii under the normal force, p_max = 2 F / (pi b L) and
+  p_mean = F / (2 b L) over the half-width b (Johnson 1985, sec. 4.2). For the conformal and
+  elastic-foundation laws it is the Hertz estimate, not their own pressure field;
+- ``<joint>_pv`` [Pa m/s]: p_mean times the sliding speed, the usual wear severity of a
+  bearing (the product Archard's law integrates);
+- ``<joint>_friction_power`` [W]: |friction force x sliding speed|, the heat the contact
+  makes;
+- ``<joint>_damping_power`` [W]: the normal force's damped part times the penetration rate,
+  (F_n - F_elastic) d(delta)/dt, what the contact law's hysteresis dissipates (the compiled
+  loop sums the same product into the summary's ``energy_dissipated_damping_j``).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+
+COLUMNS = ("p_max", "p_mean", "pv", "friction_power", "damping_power")  # after the joint's own
+
+
+def tribology_columns(joint: object, timeseries: pd.DataFrame) -> dict[str, np.ndarray]:
+    """The ``COLUMNS`` of one revolute clearance joint, one value per row of ``timeseries``."""
+    c, name = joint.clearance, joint.name
+    force = timeseries[f"{name}_fn"].to_numpy()
+    speed = np.abs(timeseries[f"{name}_vt"].to_numpy())
+    # Half-width and peak pressure grow as the square root of the force: those at 1 N,
+    # scaled, are the line contact's at every row.
+    unit_width, unit_peak = c.hertz_patch(1.0)
+    root = np.sqrt(np.maximum(force, 0.0))
+    half_width, peak = unit_width * root, unit_peak * root
+    loaded = half_width > 0.0
+    mean = np.zeros_like(force)
+    mean[loaded] = force[loaded] / (2.0 * half_width[loaded] * c.width)
+    damped = force - timeseries[f"{name}_fn_elastic"].to_numpy()
+    rate = timeseries[f"{name}_delta_dot"].to_numpy()
+    return {
+        f"{name}_p_max": peak,
+        f"{name}_p_mean": mean,
+        f"{name}_pv": mean * speed,
+        f"{name}_friction_power": np.abs(timeseries[f"{name}_ft"].to_numpy()) * speed,
+        f"{name}_damping_power": np.where(force > 0.0, damped * rate, 0.0),
+    }
