@@ -144,19 +144,21 @@ def _report(results: Results, out_dir: Path) -> None:
         raise typer.Exit(code=1)
 
 
-RANGE_WORDS = {  # outside_law_ranges entry: what exceeded its limit
-    "penetration_over_clearance": "penetration / clearance",
-    "hertz_half_width_over_journal_radius": "Hertz half-width / journal radius",
-    "eccentricity_ratio": "eccentricity ratio (film model)",
-}
+def _kind(joint: dict) -> ClearanceKind:
+    """The joint type of a clearance joint's summary (an older one's: the first kind)."""
+    from ..joints import BY_NAME, KINDS
+
+    return BY_NAME[joint.get("type", KINDS[0].name)]
 
 
 def _range_warnings(name: str, joint: dict) -> list[str]:
     """One warning per law assumption the joint's run went beyond (summary.json has them)."""
+    words = _kind(joint).range_words
     return [
-        f"warning: joint '{name}': {RANGE_WORDS[check]} reached {entry['largest']:.3g}, beyond "
-        f"the law's range {entry['limit']:.3g} for {100 * entry['time_fraction_beyond']:.3g} % "
-        "of the time (summary.json: outside_law_ranges)"
+        f"warning: joint '{name}': {words.get(check, check)} reached {entry['largest']:.3g}, "
+        f"beyond the law's range {entry['limit']:.3g} for "
+        f"{100 * entry['time_fraction_beyond']:.3g} % of the time "
+        "(summary.json: outside_law_ranges)"
         for check, entry in joint.get("outside_law_ranges", {}).items()
         if entry["time_beyond_s"] > 0.0
     ]
@@ -164,13 +166,12 @@ def _range_warnings(name: str, joint: dict) -> list[str]:
 
 def _joint_line(name: str, joint: dict, steady: bool) -> str:
     """One line of a clearance joint's headline figures (``steady``: in the steady state)."""
-    revolute = joint.get("type", "revolute") == "revolute"
     depth = "{0} {1:.4g} µm{2}"
     wear = [
         depth.format(
             surface, joint[f"max_wear_depth_{surface}_m"] * 1e6, _wear_place(joint, surface)
         )
-        for surface in (("journal", "bearing") if revolute else SLIDER_SURFACES)
+        for surface in _kind(joint).surfaces
         if f"max_wear_depth_{surface}_m" in joint  # an unbounded guide keeps no wear map
     ]
     whole = joint.get("whole_run", {})
@@ -184,9 +185,6 @@ def _joint_line(name: str, joint: dict, steady: bool) -> str:
         f"{100 * joint['contact_time_fraction']:.4g} % of the time, {joint['impacts']} impacts"
         f"{start_up}; max wear depth {', '.join(wear)}"
     )
-
-
-SLIDER_SURFACES = ("guide_top", "guide_bottom", "slider_top", "slider_bottom")
 
 
 def _wear_place(joint: dict, surface: str) -> str:

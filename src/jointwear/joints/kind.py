@@ -33,7 +33,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from importlib import import_module
-from types import ModuleType
+from types import MappingProxyType, ModuleType
 from typing import Any, NamedTuple
 
 import numpy as np
@@ -77,6 +77,9 @@ class ClearanceKind:
     animation_module: str = ""  # its drawing in the animation: ``actor``, ``title``, and
     # ``ideal_actor`` if its ideal joints have a drawing of their own
     pins_points: bool = False  # whether its ideal joint holds its two points together
+    surfaces: tuple[str, ...] = ()  # its worn surfaces, in the order reports list them
+    range_words: dict[str, str] = MappingProxyType({})  # outside_law_ranges' checks in words
+    ideal_rows: tuple[str, ...] = ()  # what each constraint equation of its ideal joint holds
 
     @property
     def module(self) -> ModuleType:

@@ -10,8 +10,12 @@ from enum import IntEnum
 class JointKind(IntEnum):
     """Kinds of ideal kinematic joints (rows of the constraint table)."""
 
-    REVOLUTE = 0
-    TRANSLATIONAL = 1
+    REVOLUTE = 0  # the two points coincide
+    TRANSLATIONAL = 1  # relative angle fixed, the second point on the first body's line
+    POINT_ON_LINE = 2  # the second point on the first body's line
+
+
+JOINT_ROWS = (2, 2, 1)  # constraint equations of each JointKind, in code order
 
 
 class DriverKind(IntEnum):

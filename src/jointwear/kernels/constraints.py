@@ -8,9 +8,12 @@
 | phi_t | partial time derivative of Phi (drivers) | m/s, rad/s |
 
 Rows: revolute 2 (Phi = r_i + A_i s_i - r_j - A_j s_j), translational 2 (relative angle, and
-the second point on the first body's line), driver 1. The formulas follow Nikravesh (1988),
-ch. 4 and 6; the paper's Eq. (1)-(3).
+the second point on the first body's line), point on a line 1 (that line alone: a pin in a
+slot), driver 1. A joint of a kind not listed here sets its rows to NaN. The formulas
+follow Nikravesh (1988), ch. 4 and 6; the paper's Eq. (1)-(3).
 """
+
+import math
 
 from numba import njit
 
@@ -93,16 +96,22 @@ def evaluate_constraints(t, q, qd, mech, phi, cq, gamma, phi_t):
         j = mech.joint_body[jt, 1]
         s = mech.joint_point[jt]
         r = mech.joint_row[jt]
-        if mech.joint_kind[jt] == JointKind.REVOLUTE:
+        kind = mech.joint_kind[jt]
+        ax = mech.joint_axis[jt, 0]
+        ay = mech.joint_axis[jt, 1]
+        if kind == JointKind.REVOLUTE:
             _revolute(q, qd, i, j, s, r, phi, cq, gamma)
-        else:  # translational: relative angle, then the normal-to-axis projection
+        elif kind == JointKind.TRANSLATIONAL:  # relative angle, then the point on the line
             phi[r] = angle(q, j) - angle(q, i) - mech.joint_angle0[jt]
             _add(cq, r, 0, i, 2, -1.0)
             _add(cq, r, 1, j, 2, 1.0)
             gamma[r] = 0.0
-            ax = mech.joint_axis[jt, 0]
-            ay = mech.joint_axis[jt, 1]
             line_projection(q, qd, i, j, s, -ay, ax, r + 1, phi, cq, gamma)
+        elif kind == JointKind.POINT_ON_LINE:
+            line_projection(q, qd, i, j, s, -ay, ax, r, phi, cq, gamma)
+        else:  # an unknown kind: the run stops non-finite rather than run as another
+            phi[r] = math.nan
+            gamma[r] = math.nan
     for d in range(mech.driver_kind.shape[0]):
         r = mech.driver_row[d]
         fn = mech.driver_function[d]

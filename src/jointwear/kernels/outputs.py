@@ -29,7 +29,7 @@ def _reaction(dyn, mech, jt, side, k):
     """Component k of the force joint jt's rows apply to its first (side 0) or second body [N]."""
     r0 = mech.joint_row[jt]
     force = 0.0
-    for r in range(r0, r0 + 2):
+    for r in range(r0, r0 + mech.joint_rows[jt]):
         force -= dyn.cq[r, 3 * side + k] * dyn.lam[r]
     return force
 

@@ -14,11 +14,12 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
+from ..joints import BY_NAME
 from ..kernels.constraints import evaluate_constraints
 from ..kernels.structs import to_struct
 from ..model import Model, ModelError
 from .pattern import ENTRIES
-from .system import System, constraint_count, initial_guess
+from .system import System, constraint_count, initial_guess, joint_row_count
 
 MAX_ITERATIONS = 50
 RANK_TOLERANCE = 1e-9
@@ -39,15 +40,11 @@ class Assembly:
 
 def row_labels(model: Model) -> list[str]:
     """A readable label per constraint row, in kernel row order."""
-    labels = []
-    for joint in model.joints:
-        if joint.type == "revolute":
-            labels += [f"joint '{joint.name}' (revolute, x)", f"joint '{joint.name}' (revolute, y)"]
-        else:
-            labels += [
-                f"joint '{joint.name}' (translational, angle)",
-                f"joint '{joint.name}' (translational, line)",
-            ]
+    labels = [
+        f"joint '{joint.name}' ({joint.type}, {row})"
+        for joint in model.joints
+        for row in BY_NAME[joint.type].ideal_rows
+    ]
     labels += [f"driver '{d.name}'" for d in model.drivers]
     return labels
 
@@ -155,7 +152,7 @@ def assemble(model: Model, system: System, tolerance: float | None = None) -> As
                 "motions; make them agree or remove one"
             ]
         )
-    joint_rows = 2 * system.mechanism.joint_kind.shape[0]
+    joint_rows = joint_row_count(system.mechanism)
     return Assembly(
         y0=np.concatenate([q, qd]),
         iterations=iterations,

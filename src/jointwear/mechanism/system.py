@@ -13,7 +13,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..joints import BY_NAME, KINDS
-from ..kernels.codes import DriverKind, EventDirection, FunctionKind
+from ..kernels.codes import JOINT_ROWS, DriverKind, EventDirection, FunctionKind
 from ..kernels.loop import UserEvents
 from ..model import Model
 from ..model.sections import Load
@@ -45,6 +45,7 @@ class Mechanism(NamedTuple):
     joint_axis: NDArray[np.float64]  # (nj, 2) unit axis in the first body's frame
     joint_angle0: NDArray[np.float64]  # (nj,) relative angle held by translational joints [rad]
     joint_row: NDArray[np.int64]  # (nj,) first constraint row
+    joint_rows: NDArray[np.int64]  # (nj,) its number of rows (JOINT_ROWS)
     driver_kind: NDArray[np.int64]  # (nd,) DriverKind
     driver_body: NDArray[np.int64]  # (nd, 2) angle drivers: (relative_to, body)
     driver_joint: NDArray[np.int64]  # (nd,) distance drivers: translational joint index
@@ -91,8 +92,13 @@ class System(NamedTuple):
 
 
 def constraint_count(mechanism: Mechanism) -> int:
-    """Number of constraint equations (2 per joint, 1 per driver)."""
-    return 2 * mechanism.joint_kind.shape[0] + mechanism.driver_kind.shape[0]
+    """Number of constraint equations (each joint's ``JOINT_ROWS``, 1 per driver)."""
+    return joint_row_count(mechanism) + mechanism.driver_kind.shape[0]
+
+
+def joint_row_count(mechanism: Mechanism) -> int:
+    """Number of the ideal joints' constraint equations (they come before the drivers')."""
+    return int(mechanism.joint_rows.sum())
 
 
 def freed_degrees_of_freedom(model: Model) -> int:
@@ -227,7 +233,7 @@ def build_system(model: Model, *, ideal: bool = False) -> System:
         return np.array([x + c * px - s * py, y + s * px + c * py])
 
     functions = _Functions()
-    joints = {"kind": [], "body": [], "point": [], "axis": [], "angle0": [], "row": []}
+    joints = {"kind": [], "body": [], "point": [], "axis": [], "angle0": [], "row": [], "rows": []}
     kernel_index: dict[str, int] = {}  # ideal joints: row of the kernels' joint table
     rows: dict[str, list] = {kind.name: [] for kind in KINDS}
     row = 0
@@ -248,7 +254,8 @@ def build_system(model: Model, *, ideal: bool = False) -> System:
         joints["axis"].append(axis)
         joints["angle0"].append(angle0)
         joints["row"].append(row)
-        row += 2
+        joints["rows"].append(JOINT_ROWS[joint.kind])
+        row += JOINT_ROWS[joint.kind]
 
     drivers = {"kind": [], "body": [], "joint": [], "function": [], "row": []}
     for driver in model.drivers:
@@ -303,8 +310,8 @@ def build_system(model: Model, *, ideal: bool = False) -> System:
 
     coordinate = {"x": 0, "y": 1, "phi": 2}
     row_bodies = np.zeros((row, 2), dtype=np.int64)
-    for first, pair in zip(joints["row"], joints["body"], strict=True):
-        row_bodies[first : first + 2] = pair
+    for first, count, pair in zip(joints["row"], joints["rows"], joints["body"], strict=True):
+        row_bodies[first : first + count] = pair
     for r, kind, pair, jt in zip(
         drivers["row"], drivers["kind"], drivers["body"], drivers["joint"], strict=True
     ):
@@ -321,6 +328,7 @@ def build_system(model: Model, *, ideal: bool = False) -> System:
         joint_axis=_table(joints["axis"], (2,), np.float64),
         joint_angle0=_table(joints["angle0"], (), np.float64),
         joint_row=_table(joints["row"], (), np.int64),
+        joint_rows=_table(joints["rows"], (), np.int64),
         driver_kind=_table(drivers["kind"], (), np.int64),
         driver_body=_table(drivers["body"], (2,), np.int64),
         driver_joint=_table(drivers["joint"], (), np.int64),

@@ -9,6 +9,7 @@ surface and where, and the law-range checks (``outside_law_ranges``).
 from __future__ import annotations
 
 import math
+from types import MappingProxyType
 
 import numpy as np
 from numpy.typing import NDArray
@@ -55,6 +56,13 @@ class RevoluteKind(ClearanceKind):
     derived_after = "fn_elastic"  # before a lubricated joint's film columns
     figures_module = f"{__name__}.figures"
     animation_module = f"{__name__}.animation"
+    surfaces = ("journal", "bearing")  # the journal first, as the paper's Figs. 8-10
+    range_words = MappingProxyType({
+        "penetration_over_clearance": "penetration / clearance",
+        "hertz_half_width_over_journal_radius": "Hertz half-width / journal radius",
+        "eccentricity_ratio": "eccentricity ratio (film model)",
+    })  # fmt: skip
+    ideal_rows = ("x", "y")
     pins_points = True
     figures = (  # the paper's Figs. 7-10
         ("fig7_dynamics", "plot_dynamics"),

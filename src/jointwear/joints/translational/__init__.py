@@ -51,6 +51,8 @@ class TranslationalKind(ClearanceKind):
     impact_columns = ("contact", "guide_position_m")
     figures_module = f"{__name__}.figures"
     animation_module = f"{__name__}.animation"
+    surfaces = SURFACES
+    ideal_rows = ("angle", "line")
     pins_points = False
     figures = (
         ("slider_motion", "plot_slider_motion"),
