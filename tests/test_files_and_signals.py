@@ -182,7 +182,7 @@ def test_an_escaped_error_is_one_line_with_exit_70(monkeypatch, capsys):
     def broken(*args, **kwargs):
         raise ValueError("something\nunexpected")
 
-    monkeypatch.setattr("jointwear.mechanism.system.build_system", broken)
+    monkeypatch.setattr("jointwear.engine.prepare.build_system", broken)
     monkeypatch.delenv(command.DEBUG_VARIABLE, raising=False)
     with pytest.raises(SystemExit) as stop:
         command.main(["check", str(PENDULUM)])

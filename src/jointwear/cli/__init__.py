@@ -28,8 +28,8 @@ HELP = (
 )
 
 app = typer.Typer(no_args_is_help=True, help=HELP, rich_markup_mode=None)
-for command in (run, check, plot, sweep, life, citations, export):
-    app.command()(command)
+for function in (run, check, plot, sweep, life, citations, export):
+    app.command()(function)
 
 
 def _print_version(asked: bool) -> None:
