@@ -12,7 +12,9 @@ From each row's normal and friction force and sliding speed (the joint's own col
   makes;
 - ``<joint>_damping_power`` [W]: the normal force's damped part times the penetration rate,
   (F_n - F_elastic) d(delta)/dt, what the contact law's hysteresis dissipates (the compiled
-  loop sums the same product into the summary's ``energy_dissipated_damping_j``).
+  loop sums the same product into the summary's ``energy_dissipated_damping_j``). While F_n
+  is clamped at zero with the surfaces still overlapping, it is the elastic energy released,
+  F_elastic |d(delta)/dt|.
 """
 
 from __future__ import annotations
@@ -61,5 +63,5 @@ def tribology_columns(model: Model, timeseries: pd.DataFrame) -> pd.DataFrame:
         columns[f"{name}_friction_power"] = np.abs(timeseries[f"{name}_ft"].to_numpy()) * speed
         damped = force - timeseries[f"{name}_fn_elastic"].to_numpy()
         rate = timeseries[f"{name}_delta_dot"].to_numpy()
-        columns[f"{name}_damping_power"] = np.where(force > 0.0, damped * rate, 0.0)
+        columns[f"{name}_damping_power"] = damped * rate  # 0 without overlap (both forces 0)
     return pd.DataFrame(columns, index=timeseries.index)
