@@ -61,7 +61,7 @@ def tribology_columns(model: Model, timeseries: pd.DataFrame) -> pd.DataFrame:
         columns[f"{name}_p_mean"] = mean
         columns[f"{name}_pv"] = mean * speed
         columns[f"{name}_friction_power"] = np.abs(timeseries[f"{name}_ft"].to_numpy()) * speed
-        damped = force - timeseries[f"{name}_fn_elastic"].to_numpy()
+        elastic = timeseries[f"{name}_fn_elastic"].to_numpy()  # > 0 while they overlap
         rate = timeseries[f"{name}_delta_dot"].to_numpy()
-        columns[f"{name}_damping_power"] = damped * rate  # 0 without overlap (both forces 0)
+        columns[f"{name}_damping_power"] = np.where(elastic > 0.0, (force - elastic) * rate, 0.0)
     return pd.DataFrame(columns, index=timeseries.index)
