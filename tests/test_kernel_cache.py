@@ -6,9 +6,12 @@ import subprocess
 import sys
 import textwrap
 
+import pandas as pd
 import pytest
 from numba.core import caching
+from runs import EXAMPLES
 
+import jointwear as jw
 from jointwear.kernels import cache
 
 
@@ -44,16 +47,20 @@ def test_functions_outside_the_kernels_keep_numba_locators(tmp_path):
         assert locator.from_function(lambda: 1, str(outside)) is None
 
 
-def _python(script: str, env: dict | None = None) -> str:
+def _run(script: str, env: dict | None = None) -> subprocess.CompletedProcess:
     done = subprocess.run(
         [sys.executable, "-c", textwrap.dedent(script)],
         capture_output=True,
         text=True,
         env=env,
-        timeout=600,
+        timeout=900,
     )
     assert done.returncode == 0, done.stderr
-    return done.stdout
+    return done
+
+
+def _python(script: str, env: dict | None = None) -> str:
+    return _run(script, env).stdout
 
 
 def test_a_kernel_loads_from_the_cache_without_numbas_compile_time_modules():
@@ -101,3 +108,77 @@ def test_functions_outside_the_kernels_load_from_their_cache_as_numba_loads_them
     value, hits, compile_modules = _python(script, env).split()
     assert (float(value), int(hits)) == (3.0, 1)
     assert compile_modules == "True"  # numba's own load refreshed its context
+
+
+def test_a_set_locator_variable_is_warned_about_once(tmp_path):
+    # numba then uses the locators it names for the kernels too: numba's own, unstamped.
+    script = """
+        from numba import njit
+        from jointwear.kernels.laws.normal import effective_modulus, effective_radius
+        effective_modulus(200e9, 0.3, 100e9, 0.25), effective_radius(0.01, 0.0098)
+        print(type(effective_modulus._cache._impl.locator).__name__)
+    """
+    env = {**os.environ, "NUMBA_CACHE_DIR": str(tmp_path)}
+    warned = {**env, "NUMBA_CACHE_LOCATOR_CLASSES": "UserProvidedCacheLocator"}
+    done = _run(script, warned)
+    assert done.stdout.split() == ["UserProvidedCacheLocator"]
+    assert done.stderr.count("NUMBA_CACHE_LOCATOR_CLASSES") == 1
+    assert done.stderr.startswith(cache.LOCATORS_SET)  # what to do: unset it, or delete
+    done = _run(script, env)
+    assert done.stdout.split() == ["KernelTreeUserProvidedCacheLocator"]
+    assert "NUMBA_CACHE_LOCATOR_CLASSES" not in done.stderr
+
+
+def test_an_index_naming_a_moved_type_is_a_miss(tmp_path):
+    # A kernel cached for a named tuple of a module outside the kernels; the module then goes
+    # (its class moved elsewhere), which the stamp does not see. numba unpickles the whole
+    # index before it looks up a signature: the kernel must compile, not raise ImportError.
+    env = {
+        **os.environ,
+        "NUMBA_CACHE_DIR": str(tmp_path / "cache"),
+        "PYTHONPATH": os.pathsep.join([str(tmp_path), os.environ.get("PYTHONPATH", "")]),
+    }
+    record = "from typing import NamedTuple\n\nclass Record(NamedTuple):\n    x: float\n"
+    (tmp_path / "old_home.py").write_text(record)
+    script = """
+        from jointwear.kernels.structs import to_struct
+        from {module} import Record
+        to_struct(Record(1.5))
+        print(to_struct.stats.cache_hits.get(to_struct.signatures[0], 0))
+    """
+    assert _python(script.format(module="old_home"), env).split() == ["0"]  # compiled
+    (index,) = (tmp_path / "cache").rglob("struct_ref.to_struct-*.nbi")
+    assert b"old_home" in index.read_bytes()
+    (tmp_path / "old_home.py").rename(tmp_path / "new_home.py")
+    assert _python(script.format(module="new_home"), env).split() == ["0"]  # compiled again
+    assert b"old_home" not in index.read_bytes()  # the stale index replaced
+    assert _python(script.format(module="new_home"), env).split() == ["1"]  # and loaded
+
+
+@pytest.mark.slow
+def test_plain_numba_runs_as_the_stamped_kernels_do(tmp_path):
+    # JOINTWEAR_PLAIN_NUMBA=1: numba's own locators and loading, named tuples for structs, and
+    # neither cache.py nor struct_ref.py imported. Everything compiles into an empty cache
+    # (about 2 min of CPU). The same arithmetic either way: the same numbers.
+    env = {**os.environ, "JOINTWEAR_PLAIN_NUMBA": "1", "NUMBA_CACHE_DIR": str(tmp_path / "c")}
+    pendulum = EXAMPLES / "pendulum.toml"
+    model = jw.load_model(pendulum, overrides=["solver.t_end=0.05"])
+    out = tmp_path / "plain.pickle"
+    script = f"""
+        import sys
+        import jointwear as jw
+        from jointwear.kernels import loop, structs
+        res = jw.simulate(jw.load_model({str(pendulum)!r}, overrides=["solver.t_end=0.05"]))
+        res.timeseries.to_pickle({str(out)!r})
+        print(res.status, type(loop.advance._cache._impl.locator).__name__)
+        print(structs.StructProxy is tuple, "jointwear.kernels.cache" in sys.modules)
+        print("jointwear.kernels.struct_ref" in sys.modules)
+    """
+    assert _python(script, env).split() == [
+        *("success", "UserProvidedCacheLocator"),
+        *("True", "False", "False"),
+    ]
+    assert any((tmp_path / "c").rglob("loop.advance-*.nbi"))  # numba's own cache, filled
+    plain = pd.read_pickle(out)
+    assert len(plain) == 51
+    pd.testing.assert_frame_equal(plain, jw.simulate(model).timeseries, check_exact=True)

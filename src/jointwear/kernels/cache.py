@@ -16,12 +16,24 @@ four-bar; less where a kernel's environment imports some of numba's modules back
 An index that no longer unpickles (it names a type of the kernels' arguments in a module
 that has moved since, outside ``kernels/``, so the stamp did not change) is a miss: it is
 removed, and the kernel compiles and is saved again.
+
+With ``NUMBA_CACHE_LOCATOR_CLASSES`` set (in the environment or numba's config file), numba
+uses the locators it names for every function, these included, and the stamp is lost: a
+kernel loaded from the cache may then be older than a kernel it calls. That is warned about,
+once per process on stderr, not refused: the setting may be there for other code.
+
+With ``JOINTWEAR_PLAIN_NUMBA=1`` this module is not imported (``kernels/__init__.py``):
+numba caches and loads the kernels as it does any function, the way out if a numba release
+breaks the internals used here (``caching``'s locator classes, ``Cache._load_overload`` and
+``_guard_against_spurious_io_errors``, ``rtsys``). Then numba's own cache can go stale:
+delete it after changing a kernel.
 """
 
 import contextlib
 import hashlib
 import os
 import pickle
+import sys
 from typing import Any
 
 import numba
@@ -29,6 +41,12 @@ from numba.core import caching
 from numba.core.runtime import rtsys
 
 KERNELS = os.path.dirname(os.path.abspath(__file__))
+LOCATORS_SET = (
+    "jointwear: NUMBA_CACHE_LOCATOR_CLASSES is set, so numba's cache of jointwear's kernels "
+    "is not stamped with their sources and can go stale when a kernel changes: unset it, or "
+    "delete the cache after changing jointwear (__pycache__ under jointwear/kernels/, or "
+    "NUMBA_CACHE_DIR).\n"
+)
 
 
 def _sources_digest() -> str:
@@ -106,8 +124,11 @@ STALE_INDEX = (ImportError, AttributeError, pickle.UnpicklingError, EOFError)
 def install() -> None:
     """Put the kernel-tree locators first in numba's list and load kernels with ``load_kernel``.
 
-    Once; before any kernel is defined.
+    Once; before any kernel is defined. Warns on stderr where ``NUMBA_CACHE_LOCATOR_CLASSES``
+    overrides the locators.
     """
+    if getattr(numba.config, "CACHE_LOCATOR_CLASSES", ""):
+        sys.stderr.write(LOCATORS_SET)
     classes = caching.CacheImpl._locator_classes
     if classes[0] is not LOCATORS[0]:
         classes[:0] = LOCATORS

@@ -12,7 +12,9 @@ From each row's normal and friction force and sliding speed (the joint's own col
   makes;
 - ``<joint>_damping_power`` [W]: the normal force's damped part times the penetration rate,
   (F_n - F_elastic) d(delta)/dt, what the contact law's hysteresis dissipates (the compiled
-  loop sums the same product into the summary's ``energy_dissipated_damping_j``).
+  loop sums the same product into the summary's ``energy_dissipated_damping_j``). While F_n
+  is clamped at zero with the surfaces still overlapping, it is the elastic energy released,
+  F_elastic |d(delta)/dt|.
 """
 
 from __future__ import annotations
@@ -36,12 +38,12 @@ def tribology_columns(joint: object, timeseries: pd.DataFrame) -> dict[str, np.n
     loaded = half_width > 0.0
     mean = np.zeros_like(force)
     mean[loaded] = force[loaded] / (2.0 * half_width[loaded] * c.width)
-    damped = force - timeseries[f"{name}_fn_elastic"].to_numpy()
+    elastic = timeseries[f"{name}_fn_elastic"].to_numpy()  # > 0 while they overlap
     rate = timeseries[f"{name}_delta_dot"].to_numpy()
     return {
         f"{name}_p_max": peak,
         f"{name}_p_mean": mean,
         f"{name}_pv": mean * speed,
         f"{name}_friction_power": np.abs(timeseries[f"{name}_ft"].to_numpy()) * speed,
-        f"{name}_damping_power": np.where(force > 0.0, damped * rate, 0.0),
+        f"{name}_damping_power": np.where(elastic > 0.0, (force - elastic) * rate, 0.0),
     }

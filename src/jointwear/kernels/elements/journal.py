@@ -488,10 +488,12 @@ def accumulate(table, state, scratch, log, t_old, t_new, q_mid, qd_mid, snap_tim
         c = scratch.contact[k]
         totals = log.totals[k]
         sliding_speed = 0.0  # of a contact that wears
+        # Also while F_N is clamped at 0 with the surfaces still overlapping: the elastic
+        # energy they release then is lost, (0 - f_e) delta_dot > 0.
+        totals[T_DAMPING_ENERGY] += (c[C_FN] - c[C_ELASTIC]) * c[C_DDOT] * h
         if c[C_FN] > 0.0:
             totals[T_CONTACT_TIME] += h
             _track_peaks(totals, c)
-            totals[T_DAMPING_ENERGY] += (c[C_FN] - c[C_ELASTIC]) * c[C_DDOT] * h
             totals[T_FRICTION_ENERGY] -= c[C_FT] * c[C_VT] * h
             p = table.params[k]
             if is_sliding(table.ints[k, I_FRICTION], c[C_VT], p[P_F0], p[P_F1], p[P_F2]):

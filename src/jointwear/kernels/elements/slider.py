@@ -429,12 +429,14 @@ def accumulate(table, state, scratch, log, t_old, t_new, q_mid, qd_mid, snap_tim
             speeds[i] = 0.0
             _evaluate(table, state, scratch, k, i, q_mid, qd_mid)
             c = scratch.contact[k, i]
+            # Also while F_N is clamped at 0 with the bodies still overlapping (see
+            # write_outputs).
+            totals[T_DAMPING_ENERGY] += (c[C_FN] - c[C_ELASTIC]) * c[C_DDOT] * h
             if c[C_FN] <= 0.0:
                 continue
             touching = True
             totals[T_MAX_FN] = max(totals[T_MAX_FN], c[C_FN])
             totals[T_MAX_DELTA] = max(totals[T_MAX_DELTA], c[C_DELTA])
-            totals[T_DAMPING_ENERGY] += (c[C_FN] - c[C_ELASTIC]) * c[C_DDOT] * h
             totals[T_FRICTION_ENERGY] -= c[C_FT] * c[C_VT] * h
             p = table.params[k]
             if is_sliding(table.ints[k, I_FRICTION], c[C_VT], p[P_F0], p[P_F1], p[P_F2]):
@@ -483,9 +485,13 @@ def write_outputs(table, scratch, row, c):
             f = _force_on_slider(contact)
             fx += f[0]
             fy += f[1]
-            if contact[C_FN] > 0.0:  # the powers the loop integrates into its totals
+            # The powers the loop integrates into its totals. The damped part's, (F_N - f_e)
+            # delta_dot, also while F_N is clamped at 0 with the bodies still overlapping
+            # (receding faster than the onset speed over the hysteresis factor): the elastic
+            # energy released then is lost, f_e |delta_dot| (0 without overlap: f_e = F_N = 0).
+            damping += (contact[C_FN] - contact[C_ELASTIC]) * contact[C_DDOT]
+            if contact[C_FN] > 0.0:
                 friction -= contact[C_FT] * contact[C_VT]
-                damping += (contact[C_FN] - contact[C_ELASTIC]) * contact[C_DDOT]
             row[c + n + i] = contact[C_FN]
             row[c + n + contacts + i] = contact[C_VT]
         row[c + 2] = fx
