@@ -214,9 +214,13 @@ def check(model: ModelPath, overrides: Overrides = None) -> None:
     from ..mechanism.lockup import find_lock_up, lock_up_span
     from ..mechanism.system import build_system, freed_degrees_of_freedom, sliders_outside_guides
     from ..model import ModelError, load_model
+    from ..model.clearance import contact_problems
 
     try:
         parsed = load_model(model, overrides or [])
+        problems = contact_problems(parsed)
+        if problems:
+            raise ModelError(problems)
         ideal = build_system(parsed, ideal=True)
         assembly = assemble(parsed, ideal)
         outside = sliders_outside_guides(parsed, assembly.y0)
@@ -263,11 +267,10 @@ def _clearance_table(name: str, clearance: Clearance) -> Table:
     table.add_column("quantity")
     table.add_column("value", justify="right")
     table.add_column("unit")
-    rows = [("radial clearance c = R_B - R_J", clearance.radial_clearance * 1e3, "mm")]
-    if clearance.normal_law == "hertz":
-        rows.append(
-            (f"contact stiffness K (n = {clearance.exponent:g})", clearance.stiffness, "N/m^n")
-        )
+    rows = [
+        ("radial clearance c = R_B - R_J", clearance.radial_clearance * 1e3, "mm"),
+        *_stiffness_rows(clearance),
+    ]
     rows += [
         ("contact modulus E*", clearance.contact_modulus / 1e9, "GPa"),
         ("relative radius R* = R_B R_J / c", clearance.relative_radius, "m"),
@@ -302,7 +305,7 @@ def _slider_table(model: Model, joint: TranslationalJoint, y0: NDArray) -> Table
         (f"slider (on '{joint.bodies[1]}'): length", c.slider_length * 1e3, "mm"),
         ("  height", c.slider_height * 1e3, "mm"),
         ("contacts", "4 corners" + (" + 4 guide ends" if c.guide_length else ""), ""),
-        (f"contact stiffness K (n = {c.exponent:g})", c.stiffness, "N/m^n"),
+        *_stiffness_rows(c),
         ("contact modulus E*", c.contact_modulus / 1e9, "GPa"),
     ]
     if c.corner_radius is not None:
@@ -316,6 +319,17 @@ def _slider_table(model: Model, joint: TranslationalJoint, y0: NDArray) -> Table
     return _filled(table, rows)
 
 
+def _stiffness_rows(clearance: ContactKeys) -> list[tuple]:
+    """The elastic law's constant K, where its record has one."""
+    from ..model.laws import NORMAL
+
+    law = NORMAL.by_name[clearance.normal_law]
+    if law.stiffness is None:
+        return []
+    symbol = law.stiffness.symbol.format(**clearance.law_values(law))
+    return [(f"contact stiffness {symbol}", clearance.stiffness, law.stiffness.unit)]
+
+
 def _law_rows(clearance: ContactKeys, table: Table) -> list[tuple]:
     """Rows of the friction coefficient and each chosen law with its keys; the caption too."""
     from ..model.clearance import FAMILIES
@@ -326,8 +340,11 @@ def _law_rows(clearance: ContactKeys, table: Table) -> list[tuple]:
         law = laws[getattr(clearance, law_key)]
         rows.append((f"{family} law", law.name, ""))
         rows += [(f"  {key.name}", getattr(clearance, key.name), key.unit) for key in law.keys]
-        if law.name == "archard":
-            rows.append(("  Archard k (as used)", clearance.archard_coefficient, "1/Pa"))
+        packed = law.pack(clearance.law_values(law))
+        rows += [
+            (f"  {label}", value, unit)
+            for (label, unit), value in zip(law.shown, packed[: len(law.shown)], strict=True)
+        ]
         summaries.append(f"{law.name}: {law.summary}")
     table.caption = "\n".join(summaries)
     return rows

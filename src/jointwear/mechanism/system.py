@@ -17,7 +17,9 @@ from ..kernels.elements import journal as jc
 from ..kernels.elements import slider as sc
 from ..kernels.loop import UserEvents
 from ..model import Model
-from ..model.clearance import WEAR_DISTRIBUTIONS, Clearance, law_parameters
+from ..model.clearance import WEAR_DISTRIBUTIONS, Clearance, contact_problems, law_parameters
+from ..model.errors import ModelError
+from ..model.laws.record import HERTZ_PATCH, PENETRATION
 from ..model.sections import Load
 from ..model.slide_clearance import SlideClearance
 from .pattern import build_pattern
@@ -159,7 +161,7 @@ def _columns_around_loads(model: Model) -> tuple[list[str], list[str]]:
         after += [f"{joint.name}_fx", f"{joint.name}_fy"]
     for joint in model.clearance_joints:
         after += [f"{joint.name}_{c}" for c in jc.OUTPUT_NAMES]
-        if joint.clearance.lubrication != "none":
+        if joint.clearance.lubricated:
             after += [f"{joint.name}_{c}" for c in jc.FILM_OUTPUT_NAMES]
     for joint in model.slider_joints:
         finite = joint.clearance.guide_length is not None
@@ -246,6 +248,9 @@ def _clearance_row(
     param[jc.P_MIN_SPEED] = clearance.min_impact_speed
     param[jc.P_TOL] = clearance.contact_tolerance
     param[[jc.P_VISCOSITY, jc.P_BREAKDOWN]] = laws["lubrication"].parameters
+    ranges = clearance.law_ranges()
+    param[jc.P_DEPTH_LIMIT] = ranges[PENETRATION]
+    param[jc.P_PATCH_LIMIT] = ranges.get(HERTZ_PATCH, 0.0)  # 0: the patch is not checked
     return ints, param
 
 
@@ -298,8 +303,12 @@ def build_system(model: Model, *, ideal: bool = False) -> System:
     """Build the kernel arrays of ``model`` (validated, SI).
 
     Clearance joints become rows of their element kind's table; with ``ideal`` they are ideal
-    joints instead (the assembly's "journal centred" mechanism, SPEC sec. 1).
+    joints instead (the assembly's "journal centred" mechanism, SPEC sec. 1). ModelError if a
+    clearance joint's contact cannot be computed with its values (``contact_problems``).
     """
+    problems = [] if ideal else contact_problems(model)
+    if problems:
+        raise ModelError(problems)
     index = {b.name: i for i, b in enumerate(model.bodies)}
     index["ground"] = GROUND
     pose = {b.name: (b.position[0], b.position[1], b.angle) for b in model.bodies}

@@ -21,9 +21,9 @@ import pandas as pd
 from numpy.typing import NDArray
 
 from ..kernels.elements import journal as cs
-from ..kernels.laws.normal import ElasticLaw
 from ..model import Model
 from ..model.clearance import Clearance
+from ..model.laws.record import ECCENTRICITY, HERTZ_PATCH, PENETRATION
 from . import slider
 
 SURFACES = ("bearing", "journal")
@@ -145,7 +145,7 @@ def joint_summaries(
             "energy_dissipated_friction_j": row[cs.T_FRICTION_ENERGY],
             "outside_law_ranges": _outside_ranges(c, row, duration),
         }
-        if c.lubrication != "none":
+        if c.lubricated:
             entry["energy_dissipated_film_j"] = row[cs.T_FILM_ENERGY]
         for s, surface in enumerate(SURFACES):
             depths = wear[k, s, : c.sectors]
@@ -162,23 +162,9 @@ def joint_summaries(
 def _outside_ranges(c: Clearance, row: NDArray[np.float64], duration: float) -> dict:
     """Per checked assumption of the joint's laws: its limit, the largest value, the time beyond.
 
-    Only the assumptions of the laws this joint uses (``kernels.elements.journal``).
+    Only the ranges of the laws this joint uses (their records: ``Clearance.law_ranges``).
     """
-    checks = {
-        "penetration_over_clearance": (
-            cs.T_DEPTH_TIME,
-            cs.T_DEPTH_MAX,
-            cs.depth_limit(ElasticLaw[c.normal_law.upper()]),
-        )
-    }
-    if c.normal_law == "hertz" or c.wear_distribution != "elastic_foundation":
-        checks["hertz_half_width_over_journal_radius"] = (
-            cs.T_PATCH_TIME,
-            cs.T_PATCH_MAX,
-            cs.PATCH_LIMIT,
-        )
-    if c.lubrication != "none":
-        checks["eccentricity_ratio"] = (cs.T_FILM_TIME, cs.T_FILM_MAX, c.film_breakdown)
+    checks = {name: (*_RANGE_TOTALS[name], limit) for name, limit in c.law_ranges().items()}
     return {
         name: {
             "limit": float(limit),
@@ -188,6 +174,14 @@ def _outside_ranges(c: Clearance, row: NDArray[np.float64], duration: float) -> 
         }
         for name, (time, largest, limit) in checks.items()
     }
+
+
+# The journal's totals (time beyond, largest value) of each range a law may have.
+_RANGE_TOTALS = {
+    PENETRATION: (cs.T_DEPTH_TIME, cs.T_DEPTH_MAX),
+    HERTZ_PATCH: (cs.T_PATCH_TIME, cs.T_PATCH_MAX),
+    ECCENTRICITY: (cs.T_FILM_TIME, cs.T_FILM_MAX),
+}
 
 
 def _plain(value: object) -> object:
