@@ -81,7 +81,6 @@ def test_every_record_is_complete(family):
     for law in family.laws:
         assert len(law.kernels) in (0, len(family.dispatchers)), law.name
         assert law.summary and set(law.citations) <= set(REFERENCES), law.name
-        assert law.citations or not law.kernels, f"{law.name} cites nothing"
         assert law.shapes and set(law.shapes) <= set(SHAPES), law.name
         assert all(key.unit in _KEY_TYPES for key in law.keys), law.name
         key_names = {key.name for key in law.keys}
