@@ -7,15 +7,18 @@ must differ at those points (so that a dispatch that reached another law would b
 
 import inspect
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
 
+import jointwear as jw
 from jointwear.citations import REFERENCES
-from jointwear.model.clearance import _KEY_TYPES
+from jointwear.model.clearance import _KEY_TYPES, Clearance
 from jointwear.model.laws import EVERY, NORMAL
 from jointwear.model.laws.record import ECCENTRICITY, HERTZ_PATCH, PENETRATION, SHAPES, resolve
 
+FOURBAR = Path(__file__).parents[1] / "examples" / "flores2009_fourbar.toml"
 # Sample values of every dispatcher argument, three points each. The friction speeds put
 # v_t below v0 (Ambrosio sticks), between v0 and dv (stick-slip sticks) and above both.
 SAMPLES = {
@@ -107,3 +110,16 @@ def test_the_elastic_laws_stiffness_and_energy_follow_from_their_force():
         area = float(np.trapezoid(values, steps))
         assert energy(law.code, delta, *args) == pytest.approx(area, rel=1e-6), law.name
     assert math.isnan(force(len(NORMAL.laws), 1e-5, *args))
+
+
+@pytest.mark.parametrize("family", ["normal_law", "damping", "friction_law", "wear_law"])
+def test_an_unknown_code_stops_a_run_as_non_finite(monkeypatch, family):
+    """A law code without a branch reaches the step loop as NaN, which the run catches."""
+    chosen = Clearance.chosen_laws
+
+    def unknown(self):
+        return [(f, law._replace(code=99) if f.key == family else law) for f, law in chosen(self)]
+
+    monkeypatch.setattr(Clearance, "chosen_laws", unknown)
+    result = jw.simulate(jw.load_model(FOURBAR, ["solver.t_end=0.005"]))  # in contact at once
+    assert result.status == "non_finite", result.message

@@ -45,14 +45,14 @@ from .point_loads import apply_torque
 # Columns of JournalTable.ints.
 I_BEARING = 0  # bearing body (-1: ground)
 I_JOURNAL = 1  # journal body
-I_NORMAL = 2  # elastic law code (laws.normal.NORMAL_LAWS)
-I_FRICTION = 3  # friction law code (laws.friction.FRICTION_LAWS)
-I_WEAR = 4  # wear law code (laws.wear.WEAR_LAWS)
+I_NORMAL = 2  # elastic law code (its record: model.laws.NORMAL)
+I_FRICTION = 3  # friction law code (model.laws.FRICTION)
+I_WEAR = 4  # wear law code (model.laws.WEAR)
 I_SPREAD = 5  # wear distribution: SPREAD_HERTZ, SPREAD_PEAK or SPREAD_FOUNDATION
 I_FEEDBACK = 6  # 1: the worn profile feeds back into the penetration
 I_SECTORS = 7  # sectors of each surface
-I_DAMPING = 8  # damping law code (laws.normal.DAMPING_LAWS)
-I_LUBRICATION = 9  # lubrication code (laws.lubrication.LUBRICATION_LAWS), 0: dry
+I_DAMPING = 8  # damping law code (model.laws.DAMPING)
+I_LUBRICATION = 9  # lubrication code (model.laws.LUBRICATION), 0: dry
 N_INTS = 10
 
 # Wear distributions (I_SPREAD): Hertz's ellipse over the sectors it covers, its peak into

@@ -53,10 +53,10 @@ from .point_loads import apply_force_at
 # Columns of SliderTable.ints.
 I_GUIDE = 0  # guide body (-1: ground)
 I_SLIDER = 1  # slider body
-I_NORMAL = 2  # elastic law code (laws.normal.NORMAL_LAWS)
-I_DAMPING = 3  # damping law code (laws.normal.DAMPING_LAWS)
-I_FRICTION = 4  # friction law code (laws.friction.FRICTION_LAWS)
-I_WEAR = 5  # wear law code (laws.wear.WEAR_LAWS)
+I_NORMAL = 2  # elastic law code (its record: model.laws.NORMAL)
+I_DAMPING = 3  # damping law code (model.laws.DAMPING)
+I_FRICTION = 4  # friction law code (model.laws.FRICTION)
+I_WEAR = 5  # wear law code (model.laws.WEAR)
 I_FEEDBACK = 6  # 1: the worn depths feed back into the penetrations
 I_SEGMENTS = 7  # segments of each surface
 I_ENDS = 8  # 1: a finite guide, whose edges touch the slider's faces
