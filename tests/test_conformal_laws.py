@@ -18,12 +18,12 @@ from jointwear.kernels.laws.normal import (
     elastic_energy,
     elastic_force,
     elastic_stiffness,
-    foundation_modulus,
     hysteresis_factor,
     johnson_load,
     johnson_penetration,
     johnson_switch,
 )
+from jointwear.model.laws.normal import foundation_modulus
 
 E_STAR = 207e9 / 1.82  # [Pa]
 D_R = 2e-4  # [m]

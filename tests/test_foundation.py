@@ -10,11 +10,11 @@ from hypothesis import strategies as st
 from jointwear.kernels.laws.foundation import (
     contact_half_angle,
     foundation_load,
-    foundation_modulus,
     foundation_points,
     interference,
     spread_foundation_wear,
 )
+from jointwear.model.laws.normal import foundation_modulus
 
 TWO_PI = 2.0 * math.pi
 NONE = np.empty(0)  # no wear feedback: an unworn surface

@@ -90,7 +90,9 @@ def test_non_finite_wear_is_a_status_not_a_success(tmp_path):
     result = invoke("run", FOURBAR, "--out", tmp_path, "--t-end", "0.02", "--no-figures",
                     "--set", f"{CLEARANCE}.wear_coefficient=1e300")  # fmt: skip
     assert result.exit_code == 1, result.output
-    assert result.output.startswith("non_finite: the revolute clearance joints' contact totals became")
+    assert result.output.startswith(
+        "non_finite: the revolute clearance joints' contact totals became"
+    )
     summary = strict_json(tmp_path / "summary.json")
     assert summary["status"] == "non_finite"
     assert summary["stats"]["t_reached"] > 0.0

@@ -67,14 +67,13 @@ def test_a_kernel_loads_from_the_cache_without_numbas_compile_time_modules():
     # The first process fills the cache if needed; the second loads the kernel from it.
     script = """
         import sys
-        from jointwear.kernels.laws.normal import effective_modulus
-        print(effective_modulus(200e9, 0.3, 100e9, 0.25))
+        from jointwear.kernels.laws.normal import lankarani_nikravesh
+        print(lankarani_nikravesh(0.6))
         print("numba.np.arraymath" in sys.modules)
     """
     _python(script)
     value, compile_modules = _python(script).split()
-    # 1/E* = (1 - 0.3^2)/200 GPa + (1 - 0.25^2)/100 GPa, computed here by hand
-    assert float(value) == pytest.approx(1.0 / (0.91 / 200e9 + 0.9375 / 100e9), rel=1e-15)
+    assert float(value) == pytest.approx(0.75 * (1.0 - 0.36), rel=1e-15)  # 3 (1 - c_e^2) / 4
     assert compile_modules == "False"
 
 
@@ -83,12 +82,12 @@ def test_compiling_after_a_kernel_loaded_from_the_cache_still_works():
     out = _python("""
         import numpy as np
         from numba import njit
-        from jointwear.kernels.laws.normal import effective_radius
-        print(effective_radius(0.01, 0.0098))
+        from jointwear.kernels.laws.normal import hertz
+        print(hertz(1e-4, 1e10, 1.5))
         print(njit(lambda a: np.sum(np.sort(a)[1:]))(np.array([3.0, 1.0, 2.0])))
     """)
-    radius, total = map(float, out.split())
-    assert radius == pytest.approx(0.01 * 0.0098 / 0.0002, rel=1e-12)
+    force, total = map(float, out.split())
+    assert force == pytest.approx(1e4, rel=1e-12)  # K delta^1.5 = 1e10 * (1e-4)^1.5
     assert total == 5.0
 
 

@@ -14,7 +14,7 @@ PACKAGE = "jointwear.kernels"
 ALLOWED = {"math", "numpy", "numba", "typing", "enum"}
 # Standard modules some files need beside them, by path under kernels/.
 EXTRA = {
-    "__init__.py": {"os"},  # JOINTWEAR_PLAIN_NUMBA
+    "__init__.py": {"os", "sys"},  # JOINTWEAR_PLAIN_NUMBA, the cache-installing finder
     "cache.py": {"hashlib", "os", "pickle", "contextlib", "sys"},  # stamp, index, warning
 }
 

@@ -457,8 +457,11 @@ def test_vanishing_gap_approaches_the_ideal_slider_crank():
         ({"gap": None}, "give guide_height or gap (the gap is the clearance on each side"),
         ({"guide_height": 0.05}, "give guide_height or gap, not both"),
         ({"gap": None, "guide_height": 0.04}, "guide_height 40 mm must be larger than"),
-        ({"normal_law": "johnson"}, "a slider's corners touch flat surfaces"),
-        ({"lubrication": "short_bearing", "viscosity": 0.1}, "a translational joint has none"),
+        ({"normal_law": "johnson"}, "and this joint's contact is a corner on a flat face"),
+        (
+            {"lubrication": "short_bearing", "viscosity": 0.1},
+            "lubrication 'short_bearing' applies to a journal in its bearing only",
+        ),
         ({"corner_radius": None}, "give corner_radius (the rounding of the slider's corners"),
         ({"contact_stiffness": 1e9}, "give corner_radius or contact_stiffness, not both"),
         ({"contact_tolerance": 2e-3}, "must be much smaller than the gap 0.001 m"),

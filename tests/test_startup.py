@@ -31,3 +31,10 @@ def test_check_loads_no_pandas_nor_matplotlib():
     # numba import dask and scipy themselves
     code = f"from jointwear.cli import app; app(['check', {str(FOURBAR)!r}])"
     assert not loaded(code) & {"pandas", "matplotlib", "pyarrow"}
+
+
+def test_validating_every_example_loads_no_numba():
+    # validation reads the law records (model.laws), never the compiled kernels
+    examples = sorted(str(p) for p in FOURBAR.parent.glob("*.toml"))
+    code = f"import jointwear\n    for path in {examples!r}:\n        jointwear.load_model(path)"
+    assert "numba" not in loaded(code)

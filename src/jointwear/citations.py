@@ -2,12 +2,13 @@
 
 ``citations_for(model)`` lists the references of the method (Flores 2009, always first),
 of the formulation and integrator in the model's ``[solver]``, and of the laws each
-clearance joint chooses (elastic law, damping, friction, wear, wear distribution,
-lubrication), each once, in that order. ``print_citations(model)`` prints them, as
-``pybamm.print_citations()`` does for a PyBaMM model. The tables below are keyed by the
-names the model file uses (``model.clearance.FAMILIES``, ``WEAR_DISTRIBUTIONS``,
-``model.sections.FORMULATIONS`` and ``INTEGRATORS``); tests/test_citations.py walks those
-registries, so a new law without a citation fails there.
+clearance joint chooses (elastic law and its stiffness formula, damping, friction, wear,
+wear distribution, lubrication), each once, in that order. ``print_citations(model)``
+prints them, as ``pybamm.print_citations()`` does for a PyBaMM model. A law's references
+are in its record (``model.laws``); this module keeps the bibliography and the entries of
+the method, the formulations and the integrators, keyed by the names the model file uses
+(``model.sections.FORMULATIONS`` and ``INTEGRATORS``); tests/test_citations.py walks those
+registries, so a new law or solver without a citation fails there.
 
 Only the DOI of Flores (2009) is given: it is printed on the copy of the paper the project
 works from; the others could not be checked here and are left out rather than guessed.
@@ -16,10 +17,12 @@ works from; the others could not be checked here and are left out rather than gu
 from __future__ import annotations
 
 import json
-from collections.abc import Iterable
 from os import PathLike
 from pathlib import Path
 from typing import TYPE_CHECKING
+
+from .joints import KINDS
+from .model.laws import EVERY
 
 if TYPE_CHECKING:
     from .model import Model
@@ -134,43 +137,10 @@ REFERENCES: dict[str, str] = {
     ),
 }
 
-# Per clearance-table key, per value: the references of that choice ("none": nothing).
+# Per clearance-table key, per law: its references, read from the law records.
 LAW_CITATIONS: dict[str, dict[str, tuple[str, ...]]] = {
-    "normal_law": {
-        "hertz": ("hertz1882",),
-        "johnson": ("johnson1985", "pereira2011"),
-        "liu": ("liu2007",),
-        "elastic_foundation": ("johnson1985", "mukras2010tribology"),
-    },
-    "damping": {
-        "none": (),
-        "lankarani_nikravesh": ("lankarani1990",),
-        "hunt_crossley": ("hunt1975",),
-        "flores2011": ("flores2011",),
-    },
-    "friction_law": {
-        "coulomb": ("coulomb1785",),
-        "ambrosio": ("ambrosio2002",),
-        "stick_slip": ("karnopp1985",),
-    },
-    "wear_law": {
-        "archard": ("archard1953",),
-        "reye": ("reye1860",),
-    },
-    "wear_distribution": {
-        "hertz": ("johnson1985",),
-        "peak": (FLORES2009,),  # the paper's own: its peak pressure into one sector
-        "elastic_foundation": ("mukras2010tribology",),
-    },
-    "lubrication": {
-        "none": (),
-        "short_bearing": ("flores2009lubricated", "pinkus1961"),
-        "long_bearing": ("flores2009lubricated", "hamrock2004"),
-    },
+    family.key: {law.name: law.citations for law in family.laws} for family in EVERY
 }
-# The stiffness K of a Hertz law computed from the materials (no contact_stiffness given).
-INTERNAL_CYLINDER_STIFFNESS = ("lankarani1990", "flores2008book")
-TRANSLATIONAL_CLEARANCE = ("flores2008translational",)
 FORMULATION_CITATIONS: dict[str, tuple[str, ...]] = {
     "baumgarte": ("baumgarte1972", "nikravesh1988"),
     "augmented_lagrangian": ("bayo1988", "garciadejalon1994", "bayo1996"),
@@ -188,23 +158,10 @@ def citation_keys(model: Model) -> list[str]:
         *FORMULATION_CITATIONS[model.solver.formulation],
         *INTEGRATOR_CITATIONS[model.solver.integrator],
     ]
-    for joint in model.joints_of("revolute"):
-        clearance = joint.clearance
-        keys += _law_keys(clearance, ("normal_law", "damping"))
-        if clearance.normal_law == "hertz" and clearance.contact_stiffness is None:
-            keys += INTERNAL_CYLINDER_STIFFNESS
-        keys += _law_keys(clearance, ("friction_law", "wear_law", "wear_distribution"))
-        keys += _law_keys(clearance, ("lubrication",))
-    for joint in model.joints_of("translational"):
-        keys += TRANSLATIONAL_CLEARANCE
-        keys += _law_keys(joint.clearance, ("normal_law", "damping", "friction_law", "wear_law"))
+    for kind in KINDS:
+        for joint in kind.joints(model):
+            keys += [*kind.citations, *joint.clearance.law_citations()]
     return list(dict.fromkeys(keys))
-
-
-def _law_keys(clearance: object, law_keys: Iterable[str]) -> list[str]:
-    """The references of a clearance table's choices of ``law_keys``, in that order."""
-    tables = ((LAW_CITATIONS[law_key], getattr(clearance, law_key)) for law_key in law_keys)
-    return [key for table, name in tables for key in table[name]]
 
 
 def citations_for(model: Model | str | PathLike) -> list[str]:

@@ -208,9 +208,13 @@ def check(model: ModelPath, overrides: Overrides = None) -> None:
     from ..joints import KINDS
     from ..mechanism.system import freed_degrees_of_freedom
     from ..model import ModelError, load_model
+    from ..model.clearance import contact_problems
 
     try:
         parsed = load_model(model, overrides or [])
+        problems = contact_problems(parsed)
+        if problems:
+            raise ModelError(problems)
         ready = prepare(parsed)
         assembly = ready.assembly
         if ready.lock is not None:
@@ -265,8 +269,11 @@ def _law_rows(clearance: ContactKeys, table: Table) -> list[tuple]:
         law = laws[getattr(clearance, law_key)]
         rows.append((f"{family} law", law.name, ""))
         rows += [(f"  {key.name}", getattr(clearance, key.name), key.unit) for key in law.keys]
-        if law.name == "archard":
-            rows.append(("  Archard k (as used)", clearance.archard_coefficient, "1/Pa"))
+        packed = law.pack(clearance.law_values(law))
+        rows += [
+            (f"  {label}", value, unit)
+            for (label, unit), value in zip(law.shown, packed[: len(law.shown)], strict=True)
+        ]
         summaries.append(f"{law.name}: {law.summary}")
     table.caption = "\n".join(summaries)
     return rows

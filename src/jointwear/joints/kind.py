@@ -77,6 +77,7 @@ class ClearanceKind:
     animation_module: str = ""  # its drawing in the animation: ``actor``, ``title``, and
     # ``ideal_actor`` if its ideal joints have a drawing of their own
     pins_points: bool = False  # whether its ideal joint holds its two points together
+    citations: tuple[str, ...] = ()  # keys of ``citations.REFERENCES`` behind the kind's model
     surfaces: tuple[str, ...] = ()  # its worn surfaces, in the order reports list them
     range_words: dict[str, str] = MappingProxyType({})  # outside_law_ranges' checks in words
     ideal_rows: tuple[str, ...] = ()  # what each constraint equation of its ideal joint holds
@@ -176,3 +177,14 @@ def deepest(depths: NDArray[np.float64]) -> tuple[float, int | None]:
     """The largest depth of a profile [m] and its cell (None if unworn)."""
     peak = int(np.argmax(depths))
     return float(depths[peak]), (peak if depths[peak] > 0.0 else None)
+
+
+def stiffness_rows(clearance: Any) -> list[tuple]:
+    """``check``'s row of the elastic law's constant K, where its record has one."""
+    from ..model.laws import NORMAL
+
+    law = NORMAL.by_name[clearance.normal_law]
+    if law.stiffness is None:
+        return []
+    symbol = law.stiffness.symbol.format(**clearance.law_values(law))
+    return [(f"contact stiffness {symbol}", clearance.stiffness, law.stiffness.unit)]

@@ -16,6 +16,8 @@ from ..joints import BY_NAME, KINDS
 from ..kernels.codes import JOINT_ROWS, DriverKind, EventDirection, FunctionKind
 from ..kernels.loop import UserEvents
 from ..model import Model
+from ..model.clearance import contact_problems
+from ..model.errors import ModelError
 from ..model.sections import Load
 from .pattern import build_pattern
 
@@ -216,8 +218,12 @@ def build_system(model: Model, *, ideal: bool = False) -> System:
     """Build the kernel arrays of ``model`` (validated, SI).
 
     Clearance joints become rows of their element kind's table; with ``ideal`` they are ideal
-    joints instead (the assembly's "journal centred" mechanism, SPEC sec. 1).
+    joints instead (the assembly's "journal centred" mechanism, SPEC sec. 1). ModelError if a
+    clearance joint's contact cannot be computed with its values (``contact_problems``).
     """
+    problems = [] if ideal else contact_problems(model)
+    if problems:
+        raise ModelError(problems)
     index = {b.name: i for i, b in enumerate(model.bodies)}
     index["ground"] = GROUND
     pose = {b.name: (b.position[0], b.position[1], b.angle) for b in model.bodies}

@@ -2,8 +2,11 @@
 
 The joint's first body carries the bearing (the hole, centred on the joint's first point),
 the second the journal (the pin, centred on its second point). Laws are chosen by name from
-the kernels' codes; each law's parameters are separate keys, and a key that the chosen law
-does not use is refused, so a model never carries a setting that silently does nothing.
+their records (``model.laws``); each law's parameters are separate keys, and a key that the
+chosen law does not use is refused, so a model never carries a setting that silently does
+nothing. Validation reads only the records: nothing here imports the compiled kernels, except
+the derived numbers asked for at the point of use (``elastic_force``, ``hertz_patch``,
+``computation_problems``).
 ``ContactKeys`` holds what every clearance joint shares (materials, laws, wear); the
 translational joint's table is ``model.slide_clearance``.
 """
@@ -11,109 +14,28 @@ translational joint's table is ``model.slide_clearance``.
 import math
 from collections.abc import Callable
 from functools import partial
-from typing import Annotated, NamedTuple
+from typing import TYPE_CHECKING, Annotated, ClassVar, NamedTuple
 
 from annotated_types import Ge, Gt, Le
 from pydantic import BeforeValidator, create_model, model_validator
 
-from ..kernels.laws.friction import FRICTION_LAWS as FRICTION_FAMILY
-from ..kernels.laws.lubrication import LUBRICATION_LAWS as LUBRICATION_FAMILY
-from ..kernels.laws.normal import DAMPING_LAWS as DAMPING_FAMILY
-from ..kernels.laws.normal import NORMAL_LAWS as NORMAL_FAMILY
-from ..kernels.laws.normal import (
-    ElasticLaw,
-    effective_modulus,
-    effective_radius,
-    elastic_force,
-    elastic_stiffness,
-    foundation_modulus,
-    internal_cylinder_stiffness,
-)
-from ..kernels.laws.registry import Key, Law, by_name, family_keys
-from ..kernels.laws.wear import WEAR_LAWS as WEAR_FAMILY
-from ..kernels.laws.wear import hertz_line_contact
 from ..units import Length, Pressure, Speed, Viscosity, WearCoefficient, to_si
+from .laws import DAMPING, EVERY, FRICTION, LUBRICATION, NORMAL, SHARED, WEAR, WEAR_DISTRIBUTION
+from .laws.normal import effective_modulus, effective_radius
+from .laws.record import CONFORMAL, SHAPE_NAMES, Contact, Family, Key, Law, family_keys
 from .tables import Number, Table, one_of
 
-NORMAL_LAWS = by_name(NORMAL_FAMILY)
-DAMPING_LAWS = by_name(DAMPING_FAMILY)
-FRICTION_LAWS = by_name(FRICTION_FAMILY)
-WEAR_LAWS = by_name(WEAR_FAMILY)
-LUBRICATION_LAWS = by_name(LUBRICATION_FAMILY)
-FAMILIES = {"normal": ("normal_law", NORMAL_LAWS), "damping": ("damping", DAMPING_LAWS),
-            "friction": ("friction_law", FRICTION_LAWS), "wear": ("wear_law", WEAR_LAWS),
-            "lubrication": ("lubrication", LUBRICATION_LAWS)}  # fmt: skip
-# How a step's wear goes into the sectors; the value is the kernel's code (journal.I_SPREAD).
-WEAR_DISTRIBUTIONS = {"hertz": 0, "peak": 1, "elastic_foundation": 2}
-# Before damping was its own key, normal_law named a damped Hertz law: still read that way.
-_DAMPED_HERTZ = ("lankarani_nikravesh", "hunt_crossley", "flores2011")
+if TYPE_CHECKING:
+    from .schema import Model
+
+# The shared families as {title: (model-file key, laws by name)}, and the distributions' codes.
+FAMILIES = {family.title: (family.key, family.by_name) for family in SHARED}
+WEAR_DISTRIBUTIONS = {law.name: law.code for law in WEAR_DISTRIBUTION.laws}
 
 PositiveLength = Annotated[Length, Gt(0)]
 Modulus = Annotated[Pressure, Gt(0)]
 Poisson = Annotated[Number, Ge(0), Le(0.5)]
 PositiveSpeed = Annotated[Speed, Gt(0)]
-
-
-def _users(laws: dict[str, Law]) -> dict[str, tuple[str, ...]]:
-    """{key: the laws of a family that read it}, from the family's registry."""
-    users: dict[str, tuple[str, ...]] = {}
-    for law in laws.values():
-        for key in law.keys:
-            users[key.name] = (*users.get(key.name, ()), law.name)
-    return users
-
-
-# Keys that only some laws use: {law key: {key: the laws that use it}}.
-_LAW_KEYS = {law_key: _users(laws) for law_key, laws in FAMILIES.values()}
-# The value type of a law key by its registry unit (a pint unit string; "" a plain number).
-_KEY_TYPES = {"": Number, "m": Length, "m/s": Speed, "Pa": Pressure, "1/Pa": WearCoefficient,
-              "Pa*s": Viscosity}  # fmt: skip
-
-
-def _key_field(key: Key) -> tuple[object, object]:
-    """(annotation, default) of a law's key in the schema, from its registry record."""
-    bounds = [] if key.low is None else [Gt(key.low) if key.positive else Ge(key.low)]
-    bounds += [] if key.high is None else [Le(key.high)]
-    value = Annotated[(_KEY_TYPES[key.unit], *bounds)] if bounds else _KEY_TYPES[key.unit]
-    if key.default is None:
-        return value | None, None
-    return value, key.default
-
-
-_LawKeys = create_model(
-    "_LawKeys",
-    __base__=Table,
-    **{
-        name: _key_field(key)
-        for _, laws in FAMILIES.values()
-        for name, key in family_keys(tuple(laws.values())).items()
-    },
-)
-
-
-class PackedLaw(NamedTuple):
-    """A chosen law's code and its parameters as the kernels read them (SI)."""
-
-    code: int
-    parameters: tuple[float, ...]
-
-
-def law_parameters(clearance: "ContactKeys") -> dict[str, PackedLaw]:
-    """Per family ("normal", "friction", "wear"): the chosen law's code and packed parameters."""
-    return {family: _packed(clearance, law_key, laws) for family, (law_key, laws) in
-            FAMILIES.items()}  # fmt: skip
-
-
-def _packed(clearance: "ContactKeys", law_key: str, laws: dict[str, Law]) -> PackedLaw:
-    """The chosen law of one family, packed; ValueError saying what it needs, if it cannot."""
-    law = laws[getattr(clearance, law_key)]
-    values = {key.name: getattr(clearance, key.name) for key in law.keys}
-    return PackedLaw(law.code, law.pack(values))
-
-
-DERIVED_CHECK_SHARES = (0.01, 0.1, 0.4)  # of the clearance: penetrations the laws must handle
-DERIVED_CHECK_FORCE = 1000.0  # [N] a load the Hertz patch must handle
-HERTZ_EXPONENT = 1.5  # the exponent the internal-cylinder stiffness formula is for
 
 
 def _plain_stiffness(value: object) -> object:
@@ -125,89 +47,154 @@ def _plain_stiffness(value: object) -> object:
     return value
 
 
+# The value type of a law key by its registry unit (a pint unit string; "" a plain number).
+_KEY_TYPES = {"": Number, "m": Length, "m/s": Speed, "Pa": Pressure, "1/Pa": WearCoefficient,
+              "Pa*s": Viscosity,
+              "N/m^n": Annotated[Number, BeforeValidator(_plain_stiffness)]}  # fmt: skip
+
+
+def _key_field(key: Key) -> tuple[object, object]:
+    """(annotation, default) of a law's key in the schema, from its record."""
+    bounds = [] if key.low is None else [Gt(key.low) if key.positive else Ge(key.low)]
+    bounds += [] if key.high is None else [Le(key.high)]
+    value = Annotated[(_KEY_TYPES[key.unit], *bounds)] if bounds else _KEY_TYPES[key.unit]
+    if key.default is None:
+        return value | None, None
+    return value, key.default
+
+
+_LawKeys = create_model(
+    "_LawKeys",
+    __base__=Table,
+    **{name: _key_field(key) for family in EVERY for name, key in family_keys(family).items()},
+)
+
+
+class PackedLaw(NamedTuple):
+    """A chosen law's code and its parameters as the kernels read them (SI)."""
+
+    code: int
+    parameters: tuple[float, ...]
+
+
+def law_parameters(clearance: "ContactKeys") -> dict[str, PackedLaw]:
+    """Per family title ("normal", "friction", ...): the chosen law's code and packed parameters."""
+    return {
+        family.title: PackedLaw(law.code, law.pack(clearance.law_values(law)))
+        for family, law in clearance.chosen_laws()
+    }
+
+
+DERIVED_CHECK_SHARES = (0.01, 0.1, 0.4)  # of the clearance: penetrations the laws must handle
+DERIVED_CHECK_FORCE = 1000.0  # [N] a load the Hertz patch must handle
+
+
+def _law_name(family: Family) -> object:
+    return Annotated[str, one_of(family.by_name, family.title + " law")]
+
+
 class ContactKeys(_LawKeys):
     """The keys every clearance joint shares: materials, contact, friction and wear laws (SI).
 
     The keys of the laws (restitution, friction speeds, wear coefficients, ...) come from the
-    law registries (``_LawKeys``). Pairs of material values are [first body, second body].
+    law records (``_LawKeys``). Pairs of material values are [first body, second body]. An
+    element kind's table gives its ``contact`` and the law families it chooses from.
     """
+
+    FAMILIES: ClassVar[tuple[Family, ...]] = SHARED
 
     width: PositiveLength
     youngs_modulus: Modulus | tuple[Modulus, Modulus]  # both, or [first body, second body]
     poisson_ratio: Poisson | tuple[Poisson, Poisson]
-    normal_law: Annotated[str, one_of(NORMAL_LAWS, "normal law")] = "hertz"
-    damping: Annotated[str, one_of(DAMPING_LAWS, "damping law")] = "lankarani_nikravesh"
-    exponent: Annotated[Number, Gt(0)] = 1.5
-    contact_stiffness: Annotated[Number, Gt(0), BeforeValidator(_plain_stiffness)] | None = None
+    normal_law: _law_name(NORMAL) = NORMAL.default
+    damping: _law_name(DAMPING) = DAMPING.default
     min_impact_speed: PositiveSpeed = 1e-3
     contact_tolerance: PositiveLength = 1e-10
-    friction_law: Annotated[str, one_of(FRICTION_LAWS, "friction law")] = "ambrosio"
+    friction_law: _law_name(FRICTION) = FRICTION.default
     friction_coefficient: Annotated[Number, Ge(0)]
-    wear_law: Annotated[str, one_of(WEAR_LAWS, "wear law")] = "archard"
-    lubrication: Annotated[str, one_of(LUBRICATION_LAWS, "lubrication")] = "none"
+    wear_law: _law_name(WEAR) = WEAR.default
+    lubrication: _law_name(LUBRICATION) = LUBRICATION.default
     wear_feedback: bool = True
 
     @model_validator(mode="before")
     @classmethod
-    def _damped_hertz(cls, data: object) -> object:
-        """Read normal_law = "<damping law>" as a Hertz law with that damping."""
-        if not isinstance(data, dict) or data.get("normal_law") not in _DAMPED_HERTZ:
+    def _damped_default_law(cls, data: object) -> object:
+        """Read normal_law = "<damping law>" as the default elastic law with that damping."""
+        if not isinstance(data, dict):
             return data
-        law = data["normal_law"]
+        law = data.get("normal_law")
+        if law not in DAMPING.by_name or law == DAMPING.laws[0].name:
+            return data
         if data.get("damping", law) != law:
             raise ValueError(
-                f"normal_law '{law}' is a Hertz law with damping '{law}', and damping is "
-                f"'{data['damping']}'; give normal_law = \"hertz\" and one damping"
+                f"normal_law '{law}' is a {NORMAL.default} law with damping '{law}', and "
+                f"damping is '{data['damping']}'; give normal_law = \"{NORMAL.default}\" and "
+                "one damping"
             )
-        return {**data, "normal_law": "hertz", "damping": law}
+        return {**data, "normal_law": NORMAL.default, "damping": law}
+
+    @property
+    def contact(self) -> Contact:
+        """The contact as the laws see it (the element kind's table defines it)."""
+        raise NotImplementedError
+
+    def chosen_laws(self) -> list[tuple[Family, Law]]:
+        """(family, the chosen law's record) for each family of this table."""
+        return [(family, family.by_name[getattr(self, family.key)]) for family in self.FAMILIES]
+
+    def law_values(self, law: Law) -> dict[str, float | None]:
+        """The values of the keys ``law`` reads (SI; None: not given)."""
+        return {key.name: getattr(self, key.name) for key in law.keys}
 
     def _unused_keys(self) -> list[str]:
         lines = []  # a default value is not a setting (and model.json writes them all)
-        for law_key, users in _LAW_KEYS.items():
-            chosen = getattr(self, law_key)
-            for key, laws in users.items():
+        for family, chosen in self.chosen_laws():
+            for key in family_keys(family):
                 given = getattr(self, key) != type(self).model_fields[key].default
-                if given and chosen not in laws:
-                    names = " or ".join(f"'{law}'" for law in laws)
+                if given and key not in {k.name for k in chosen.keys}:
+                    users = [law.name for law in family.laws if key in {k.name for k in law.keys}]
+                    names = " or ".join(f"'{law}'" for law in users)
                     lines.append(
-                        f"{key} is used by {law_key} {names} only, and this joint's "
-                        f"{law_key} is '{chosen}'; remove it or choose another {law_key}"
+                        f"{key} is used by {family.key} {names} only, and this joint's "
+                        f"{family.key} is '{chosen.name}'; remove it or choose another "
+                        f"{family.key}"
                     )
         return lines
 
-    def _law_problems(self) -> list[str]:
+    def _law_problems(self, shape: str) -> list[str]:
+        """Laws that do not apply to this joint's contact ``shape``, or lack their keys."""
         lines = []
-        for law_key, laws in FAMILIES.values():
-            try:
-                _packed(self, law_key, laws)
-            except ValueError as error:
-                lines.append(f"{law_key} '{getattr(self, law_key)}': {error}")
-        power_law = {"exponent": self.exponent != HERTZ_EXPONENT,
-                     "contact_stiffness": self.contact_stiffness is not None}  # fmt: skip
-        for key in (key for key, given in power_law.items() if given):
-            if self.normal_law != "hertz":
+        for family, law in self.chosen_laws():
+            if shape not in law.shapes:
+                where = " or ".join(SHAPE_NAMES[s] for s in law.shapes)
                 lines.append(
-                    f"{key} is used by normal_law 'hertz' only, and this joint's normal_law is "
-                    f"'{self.normal_law}' (its stiffness follows from the materials and "
-                    'geometry); remove it or choose normal_law = "hertz"'
+                    f"{family.key} '{law.name}' applies to {where} only, and this joint's "
+                    f"contact is {SHAPE_NAMES[shape]}: choose another {family.key}"
                 )
-        if (
-            self.normal_law == "hertz"
-            and self.exponent != HERTZ_EXPONENT
-            and self.contact_stiffness is None
-        ):
-            lines.append(
-                f"exponent {self.exponent:g} needs contact_stiffness [N/m^{self.exponent:g}]: "
-                f"the stiffness formula is for exponent {HERTZ_EXPONENT:g}"
-            )
+                continue
+            try:
+                law.pack(self.law_values(law))
+            except ValueError as error:
+                lines.append(f"{family.key} '{law.name}': {error}")
         return lines
 
-    def _derived_problems(self, gap: float) -> list[str]:
+    def _stiffness_problems(self) -> list[str]:
+        """The elastic law's stiffness, if it cannot be computed from these values."""
+        try:
+            self.stiffness  # noqa: B018 - computed for the ValueError it may raise
+        except ValueError as error:
+            return [f"normal_law '{self.normal_law}': {error}"]
+        return []
+
+    def computation_problems(self) -> list[str]:
         """A problem if the contact law gives no finite positive value where ``check`` looks.
 
-        At 1, 10 and 40 % of the clearance ``gap`` [m], and for the Hertz patch at 1 kN: values
-        at the edges of floating point (a width of 1e300 m) overflow or vanish there.
+        At 1, 10 and 40 % of the clearance, and for the Hertz patch at 1 kN where the table
+        has one: values at the edges of floating point (a width of 1e300 m) overflow or
+        vanish there. Evaluates the kernels (imports them): call it where a run or ``check``
+        is prepared, not at validation.
         """
+        gap = self.contact.clearance
         values: dict[str, Callable[[], tuple[float, float]]] = {
             f"force at {share:.0%} of the clearance": partial(self.elastic_force, share * gap)
             for share in DERIVED_CHECK_SHARES
@@ -250,13 +237,62 @@ class ContactKeys(_LawKeys):
         return effective_modulus(e_b, nu_b, e_j, nu_j)
 
     @property
-    def archard_coefficient(self) -> float:
-        """Archard's dimensional k [1/Pa] (wear_coefficient, or K / H); 0 for Reye."""
-        if self.wear_law != "archard":
+    def stiffness(self) -> float:
+        """The elastic law's constant K, as the kernels read it (its record's ``stiffness``).
+
+        A key that replaces the formula (``contact_stiffness``) if given, else the formula
+        for this contact; 0 for a law that needs none. ValueError if it cannot be computed.
+        """
+        law = NORMAL.by_name[self.normal_law]
+        if law.stiffness is None:
             return 0.0
-        if self.wear_coefficient is not None:
-            return self.wear_coefficient
-        return self.dimensionless_wear_coefficient / self.hardness
+        values = self.law_values(law)
+        given = law.stiffness.given_by
+        if given is not None and values[given] is not None:
+            return values[given]
+        return law.stiffness.formula(values, self.contact)
+
+    def law_ranges(self) -> dict[str, float]:
+        """{range name: limit} of the chosen laws (``outside_law_ranges``); the first law's wins."""
+        ranges: dict[str, float] = {}
+        for _, law in self.chosen_laws():
+            for name, limit in law.ranges:
+                ranges.setdefault(name, getattr(self, limit) if isinstance(limit, str) else limit)
+        return ranges
+
+    def law_citations(self) -> list[str]:
+        """Keys of ``citations.REFERENCES`` of the chosen laws, in family order.
+
+        After the elastic law's own, its stiffness formula's (where no key replaces it).
+        """
+        keys: list[str] = []
+        for _, law in self.chosen_laws():
+            keys += law.citations
+            stiffness = law.stiffness
+            if stiffness is not None:
+                replaced = stiffness.given_by is not None and (
+                    getattr(self, stiffness.given_by) is not None
+                )
+                keys += () if replaced else stiffness.citations.get(self.contact.shape, ())
+        return keys
+
+    @property
+    def lubricated(self) -> bool:
+        """Whether a film carries the joint (a lubrication law with a kernel)."""
+        return bool(LUBRICATION.by_name[self.lubrication].kernels)
+
+    def elastic_force(self, delta: float) -> tuple[float, float]:
+        """(force [N], stiffness dF/d(delta) [N/m]) of the elastic law at delta [m], unworn.
+
+        Evaluates the kernels (imports them).
+        """
+        from ..kernels.laws.normal import elastic_force, elastic_stiffness
+
+        contact = self.contact
+        code = NORMAL.by_name[self.normal_law].code
+        args = (delta, self.stiffness, self.exponent, contact.contact_modulus,
+                contact.clearance, self.width)  # fmt: skip
+        return elastic_force(code, *args), elastic_stiffness(code, *args)
 
 
 class Clearance(ContactKeys):
@@ -265,10 +301,12 @@ class Clearance(ContactKeys):
     Material pairs are [bearing, journal].
     """
 
+    FAMILIES: ClassVar[tuple[Family, ...]] = EVERY
+
     bearing_radius: PositiveLength
     journal_radius: PositiveLength
     journal_wear_share: Annotated[Number, Ge(0), Le(1)] = 0.5
-    wear_distribution: Annotated[str, one_of(WEAR_DISTRIBUTIONS, "wear distribution")] = "hertz"
+    wear_distribution: _law_name(WEAR_DISTRIBUTION) = WEAR_DISTRIBUTION.default
     sectors: Annotated[int, Ge(4), Le(100_000)] = 36
 
     @model_validator(mode="before")
@@ -291,12 +329,7 @@ class Clearance(ContactKeys):
 
     @model_validator(mode="after")
     def _consistent(self) -> "Clearance":
-        problems = [*self._unused_keys(), *self._law_problems()]
-        if self.normal_law == "elastic_foundation" and self.poisson_ratios[0] >= 0.5:
-            problems.append(
-                "normal_law 'elastic_foundation' needs the bearing's poisson_ratio below 0.5 "
-                "(its layer modulus (1 - nu) E / ((1 + nu)(1 - 2 nu)) is infinite at 0.5)"
-            )
+        problems = [*self._unused_keys(), *self._law_problems(CONFORMAL)]
         if self.journal_radius >= self.bearing_radius:
             problems.append(
                 f"journal_radius {self.journal_radius * 1e3:.12g} mm must be smaller than "
@@ -309,7 +342,7 @@ class Clearance(ContactKeys):
                 f"radial clearance {self.radial_clearance:g} m (default 1e-10 m)"
             )
         if not problems:
-            problems = self._derived_problems(self.radial_clearance)
+            problems = self._stiffness_problems()
         if problems:
             raise ValueError("; ".join(problems))
         return self
@@ -325,31 +358,31 @@ class Clearance(ContactKeys):
         return effective_radius(self.bearing_radius, self.journal_radius)
 
     @property
-    def stiffness(self) -> float:
-        """The elastic law's constant K, as the kernels read it.
-
-        hertz: ``contact_stiffness`` if given, else the internal-cylinder formula
-        [N/m^exponent]; elastic_foundation: (K_f / h) R_B [Pa], the layer on the bearing;
-        0 for the laws that need none.
-        """
-        (e_b, e_j), (nu_b, nu_j) = self.moduli, self.poisson_ratios
-        if self.normal_law == "elastic_foundation":
-            return foundation_modulus(e_b, nu_b) / self.foundation_thickness * self.bearing_radius
-        if self.normal_law != "hertz":
-            return 0.0
-        if self.contact_stiffness is not None:
-            return self.contact_stiffness
-        return internal_cylinder_stiffness(
-            self.bearing_radius, self.journal_radius, e_b, nu_b, e_j, nu_j
-        )
-
-    def elastic_force(self, delta: float) -> tuple[float, float]:
-        """(force [N], stiffness dF/d(delta) [N/m]) of the elastic law at delta [m], unworn."""
-        code = ElasticLaw[self.normal_law.upper()]
-        args = (delta, self.stiffness, self.exponent, self.contact_modulus,
-                self.radial_clearance, self.width)  # fmt: skip
-        return elastic_force(code, *args), elastic_stiffness(code, *args)
+    def contact(self) -> Contact:
+        """A journal in its bearing; an elastic layer lines the bearing."""
+        return Contact(
+            CONFORMAL, self.contact_modulus, self.relative_radius, self.radial_clearance,
+            self.width, (self.bearing_radius, self.moduli[0], self.poisson_ratios[0]),
+        )  # fmt: skip
 
     def hertz_patch(self, force: float) -> tuple[float, float]:
-        """Half-width b [m] and peak pressure p_max [Pa] of the line contact under force [N]."""
+        """Half-width b [m] and peak pressure p_max [Pa] of the line contact under force [N].
+
+        Evaluates the kernels (imports them).
+        """
+        from ..kernels.laws.wear import hertz_line_contact
+
         return hertz_line_contact(force, self.relative_radius, self.contact_modulus, self.width)
+
+
+def contact_problems(model: "Model") -> list[str]:
+    """``computation_problems`` of every clearance joint, one line each naming its table.
+
+    Evaluates the kernels (imports them): for the preparation of a run or of ``check``.
+    """
+    return [
+        f"joints[{i}].clearance: {problem}"
+        for i, joint in enumerate(model.joints)
+        if joint.clearance is not None
+        for problem in joint.clearance.computation_problems()
+    ]

@@ -6,10 +6,11 @@ point, its length along the axis). The slider's four corners touch the guide's t
 a finite guide's ends touch the slider's faces (``kernels.elements.slider``).
 
 Contact stiffness: each corner is a line across the width, rounded to ``corner_radius``, on a
-flat surface. It takes the same power law as the revolute joint, F = K delta^1.5 with
-K = 4/3 E* sqrt(r): the sphere-on-plane Hertz constant with the corner's radius. That is the
-revolute joint's internal-cylinder formula with the bearing's radius taken to infinity, so
-both joints follow one convention. A true line contact's stiffness also depends (weakly,
+flat surface (the laws' ``CORNER_ON_FLAT`` contact, with the corner's radius as R*). It takes
+the same power law as the revolute joint, F = K delta^1.5 with K = 4/3 E* sqrt(r): the
+sphere-on-plane Hertz constant with the corner's radius. That is the revolute joint's
+internal-cylinder formula with the bearing's radius taken to infinity, so both joints follow
+one convention. A true line contact's stiffness also depends (weakly,
 logarithmically) on the bodies' sizes, which a corner does not define; give
 ``contact_stiffness`` to use a measured or computed one instead.
 """
@@ -19,11 +20,10 @@ from typing import Annotated
 from annotated_types import Ge, Le
 from pydantic import model_validator
 
-from ..kernels.laws.normal import ElasticLaw, elastic_force, elastic_stiffness
-from .clearance import HERTZ_EXPONENT, ContactKeys, PositiveLength
+from .clearance import ContactKeys, PositiveLength
+from .laws.normal import HERTZ_EXPONENT
+from .laws.record import CORNER_ON_FLAT, Contact
 from .tables import Number
-
-LINE_ON_FLAT = 4.0 / 3.0  # K = LINE_ON_FLAT E* sqrt(r) [N/m^1.5]
 
 
 class SlideClearance(ContactKeys):
@@ -43,25 +43,19 @@ class SlideClearance(ContactKeys):
 
     @model_validator(mode="after")
     def _consistent(self) -> "SlideClearance":
-        problems = [*self._unused_keys(), *self._law_problems(), *self._slide_problems()]
+        problems = [
+            *self._unused_keys(),
+            *self._law_problems(CORNER_ON_FLAT),
+            *self._slide_problems(),
+        ]
         if not problems:
-            problems = self._derived_problems(self.clearance_gap)
+            problems = self._stiffness_problems()
         if problems:
             raise ValueError("; ".join(problems))
         return self
 
     def _slide_problems(self) -> list[str]:
         lines = []
-        if self.normal_law != "hertz":
-            lines.append(
-                f"normal_law '{self.normal_law}' is for a journal in its bearing; a slider's "
-                'corners touch flat surfaces: use normal_law = "hertz"'
-            )
-        if self.lubrication != "none":
-            lines.append(
-                f"lubrication '{self.lubrication}' is a journal bearing's film; a translational "
-                "joint has none: remove lubrication"
-            )
         if (self.guide_height is None) == (self.gap is None):
             which = "guide_height or gap" + ("" if self.gap is None else ", not both")
             lines.append(f"give {which} (the gap is the clearance on each side of the slider)")
@@ -76,18 +70,17 @@ class SlideClearance(ContactKeys):
                 f"contact_tolerance {self.contact_tolerance:g} m must be much smaller than the "
                 f"gap {self.clearance_gap:g} m (default 1e-10 m)"
             )
-        if self.normal_law == "hertz":
-            given = (self.corner_radius is not None, self.contact_stiffness is not None)
-            if given == (False, False) and self.exponent == HERTZ_EXPONENT:
-                lines.append(
-                    "give corner_radius (the rounding of the slider's corners and the guide's "
-                    "ends, which sets K = 4/3 E* sqrt(r)) or contact_stiffness [N/m^1.5]"
-                )
-            elif all(given):
-                lines.append(
-                    "give corner_radius or contact_stiffness, not both (contact_stiffness "
-                    "replaces the stiffness corner_radius sets)"
-                )
+        given = (self.corner_radius is not None, self.contact_stiffness is not None)
+        if given == (False, False) and self.exponent == HERTZ_EXPONENT:
+            lines.append(
+                "give corner_radius (the rounding of the slider's corners and the guide's "
+                "ends, which sets K = 4/3 E* sqrt(r)) or contact_stiffness [N/m^1.5]"
+            )
+        elif all(given):
+            lines.append(
+                "give corner_radius or contact_stiffness, not both (contact_stiffness "
+                "replaces the stiffness corner_radius sets)"
+            )
         return lines
 
     @property
@@ -103,14 +96,9 @@ class SlideClearance(ContactKeys):
         return 0.5 * self.slider_height + self.clearance_gap
 
     @property
-    def stiffness(self) -> float:
-        """Hertz constant K of a corner on a flat surface [N/m^exponent] (module docstring)."""
-        if self.contact_stiffness is not None:
-            return self.contact_stiffness
-        return LINE_ON_FLAT * self.contact_modulus * self.corner_radius**0.5
-
-    def elastic_force(self, delta: float) -> tuple[float, float]:
-        """(force [N], stiffness dF/d(delta) [N/m]) of one corner's contact at delta [m]."""
-        args = (delta, self.stiffness, self.exponent, self.contact_modulus,
-                self.clearance_gap, self.width)  # fmt: skip
-        return elastic_force(ElasticLaw.HERTZ, *args), elastic_stiffness(ElasticLaw.HERTZ, *args)
+    def contact(self) -> Contact:
+        """A corner, rounded to ``corner_radius`` (None: not given), on a flat face."""
+        return Contact(
+            CORNER_ON_FLAT, self.contact_modulus, self.corner_radius, self.clearance_gap,
+            self.width,
+        )  # fmt: skip

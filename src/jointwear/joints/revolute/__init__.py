@@ -15,7 +15,7 @@ import numpy as np
 from numpy.typing import NDArray
 from typing_extensions import override
 
-from ..kind import PENETRATION_SHARES, ClearanceKind, common_figures, deepest
+from ..kind import PENETRATION_SHARES, ClearanceKind, common_figures, deepest, stiffness_rows
 
 HERTZ_REFERENCE_FORCES = (100.0, 1000.0)  # loads at which `check` shows the Hertz patch [N]
 SURFACES = ("bearing", "journal")  # the first index of the kernel's wear array
@@ -93,6 +93,7 @@ class RevoluteKind(ClearanceKind):
         self, joint: object, model: object, bodies: tuple[int, int], angle0: float
     ) -> tuple[list[int], NDArray[np.float64]]:
         from ...model.clearance import WEAR_DISTRIBUTIONS, law_parameters
+        from ...model.laws.record import HERTZ_PATCH, PENETRATION
 
         jc = self.module
         clearance = joint.clearance
@@ -127,12 +128,15 @@ class RevoluteKind(ClearanceKind):
         param[jc.P_MIN_SPEED] = clearance.min_impact_speed
         param[jc.P_TOL] = clearance.contact_tolerance
         param[[jc.P_VISCOSITY, jc.P_BREAKDOWN]] = laws["lubrication"].parameters
+        ranges = clearance.law_ranges()
+        param[jc.P_DEPTH_LIMIT] = ranges[PENETRATION]
+        param[jc.P_PATCH_LIMIT] = ranges.get(HERTZ_PATCH, 0.0)  # 0: the patch is not checked
         return ints, param
 
     @override
     def columns(self, joint: object) -> tuple[str, ...]:
         jc = self.module
-        film = jc.FILM_OUTPUT_NAMES if joint.clearance.lubrication != "none" else ()
+        film = jc.FILM_OUTPUT_NAMES if joint.clearance.lubricated else ()
         return (*jc.OUTPUT_NAMES, *film)
 
     @override
@@ -152,11 +156,10 @@ class RevoluteKind(ClearanceKind):
     @override
     def check_rows(self, joint: object, model: object, y0: NDArray[np.float64]) -> list[tuple]:
         clearance = joint.clearance
-        rows = [("radial clearance c = R_B - R_J", clearance.radial_clearance * 1e3, "mm")]
-        if clearance.normal_law == "hertz":
-            rows.append(
-                (f"contact stiffness K (n = {clearance.exponent:g})", clearance.stiffness, "N/m^n")
-            )
+        rows = [
+            ("radial clearance c = R_B - R_J", clearance.radial_clearance * 1e3, "mm"),
+            *stiffness_rows(clearance),
+        ]
         rows += [
             ("contact modulus E*", clearance.contact_modulus / 1e9, "GPa"),
             ("relative radius R* = R_B R_J / c", clearance.relative_radius, "m"),
@@ -205,7 +208,7 @@ class RevoluteKind(ClearanceKind):
             **entry,
             "outside_law_ranges": _outside_ranges(jc, c, totals, duration),
         }
-        if c.lubrication != "none":
+        if c.lubricated:
             entry["energy_dissipated_film_j"] = float(totals[jc.T_FILM_ENERGY])
         for s, surface in enumerate(SURFACES):
             depth, peak = deepest(wear[s, : c.sectors])
@@ -219,33 +222,23 @@ class RevoluteKind(ClearanceKind):
 def _outside_ranges(jc: object, c: object, row: NDArray[np.float64], duration: float) -> dict:
     """Per checked assumption of the joint's laws: its limit, the largest value, the time beyond.
 
-    Only the assumptions of the laws this joint uses (``kernels.elements.journal``).
+    Only the ranges of the laws this joint uses (their records: ``Clearance.law_ranges``).
     """
-    from ...kernels.laws.normal import ElasticLaw
+    from ...model.laws.record import ECCENTRICITY, HERTZ_PATCH, PENETRATION
 
-    checks = {
-        "penetration_over_clearance": (
-            jc.T_DEPTH_TIME,
-            jc.T_DEPTH_MAX,
-            jc.depth_limit(ElasticLaw[c.normal_law.upper()]),
-        )
+    totals = {  # the kernel's totals (time beyond, largest value) of each range a law may have
+        PENETRATION: (jc.T_DEPTH_TIME, jc.T_DEPTH_MAX),
+        HERTZ_PATCH: (jc.T_PATCH_TIME, jc.T_PATCH_MAX),
+        ECCENTRICITY: (jc.T_FILM_TIME, jc.T_FILM_MAX),
     }
-    if c.normal_law == "hertz" or c.wear_distribution != "elastic_foundation":
-        checks["hertz_half_width_over_journal_radius"] = (
-            jc.T_PATCH_TIME,
-            jc.T_PATCH_MAX,
-            jc.PATCH_LIMIT,
-        )
-    if c.lubrication != "none":
-        checks["eccentricity_ratio"] = (jc.T_FILM_TIME, jc.T_FILM_MAX, c.film_breakdown)
     return {
         name: {
             "limit": float(limit),
-            "largest": float(row[largest]),
-            "time_beyond_s": float(row[time]),
-            "time_fraction_beyond": float(row[time] / duration) if duration else 0.0,
+            "largest": float(row[totals[name][1]]),
+            "time_beyond_s": float(row[totals[name][0]]),
+            "time_fraction_beyond": float(row[totals[name][0]] / duration) if duration else 0.0,
         }
-        for name, (time, largest, limit) in checks.items()
+        for name, limit in c.law_ranges().items()
     }
 
 

@@ -16,7 +16,7 @@ import numpy as np
 from numpy.typing import NDArray
 from typing_extensions import override
 
-from ..kind import PENETRATION_SHARES, ClearanceKind, common_figures, deepest
+from ..kind import PENETRATION_SHARES, ClearanceKind, common_figures, deepest, stiffness_rows
 
 SURFACES = ("guide_top", "guide_bottom", "slider_top", "slider_bottom")  # the kernel's order
 UNITS = {
@@ -51,6 +51,7 @@ class TranslationalKind(ClearanceKind):
     impact_columns = ("contact", "guide_position_m")
     figures_module = f"{__name__}.figures"
     animation_module = f"{__name__}.animation"
+    citations = ("flores2008translational",)  # the model of the contacts
     surfaces = SURFACES
     ideal_rows = ("angle", "line")
     pins_points = False
@@ -158,7 +159,7 @@ class TranslationalKind(ClearanceKind):
             (f"slider (on '{joint.bodies[1]}'): length", c.slider_length * 1e3, "mm"),
             ("  height", c.slider_height * 1e3, "mm"),
             ("contacts", "4 corners" + (" + 4 guide ends" if c.guide_length else ""), ""),
-            (f"contact stiffness K (n = {c.exponent:g})", c.stiffness, "N/m^n"),
+            *stiffness_rows(c),
             ("contact modulus E*", c.contact_modulus / 1e9, "GPa"),
         ]
         if c.corner_radius is not None:

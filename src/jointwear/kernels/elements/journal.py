@@ -28,11 +28,11 @@ from numba import njit
 
 from ..kinematics import angular_velocity
 from ..laws.foundation import foundation_load, foundation_points, spread_foundation_wear
-from ..laws.friction import is_sliding, tangential_force
+from ..laws.friction import slip_speed, tangential_force
 from ..laws.lubrication import film_force_components, film_power_loss, film_torques
 from ..laws.normal import ElasticLaw, damped, elastic_force
 from ..laws.normal import elastic_energy as law_energy
-from ..laws.wear import WearLaw, accumulate_wear, depth_at, hertz_line_contact, wear_coefficient
+from ..laws.wear import accumulate_wear, depth_at, hertz_line_contact, wear_coefficient
 from .journal_geometry import (
     apply_at_centres,
     apply_contact,
@@ -45,14 +45,14 @@ from .point_loads import apply_torque
 # Columns of JournalTable.ints.
 I_BEARING = 0  # bearing body (-1: ground)
 I_JOURNAL = 1  # journal body
-I_NORMAL = 2  # elastic law code (laws.normal.NORMAL_LAWS)
-I_FRICTION = 3  # friction law code (laws.friction.FRICTION_LAWS)
-I_WEAR = 4  # wear law code (laws.wear.WEAR_LAWS)
+I_NORMAL = 2  # elastic law code (its record: model.laws.NORMAL)
+I_FRICTION = 3  # friction law code (model.laws.FRICTION)
+I_WEAR = 4  # wear law code (model.laws.WEAR)
 I_SPREAD = 5  # wear distribution: SPREAD_HERTZ, SPREAD_PEAK or SPREAD_FOUNDATION
 I_FEEDBACK = 6  # 1: the worn profile feeds back into the penetration
 I_SECTORS = 7  # sectors of each surface
-I_DAMPING = 8  # damping law code (laws.normal.DAMPING_LAWS)
-I_LUBRICATION = 9  # lubrication code (laws.lubrication.LUBRICATION_LAWS), 0: dry
+I_DAMPING = 8  # damping law code (model.laws.DAMPING)
+I_LUBRICATION = 9  # lubrication code (model.laws.LUBRICATION), 0: dry
 N_INTS = 10
 
 # Wear distributions (I_SPREAD): Hertz's ellipse over the sectors it covers, its peak into
@@ -85,7 +85,9 @@ P_MIN_SPEED = 19  # floor of the impact speed [m/s]
 P_TOL = 20  # contact tolerance [m]
 P_VISCOSITY = 21  # lubricant's dynamic viscosity [Pa s]
 P_BREAKDOWN = 22  # eccentricity ratio where the film hands over to solid contact [-]
-N_PARAMS = 23
+P_DEPTH_LIMIT = 23  # the elastic law's range: penetration / c [-] (its record's)
+P_PATCH_LIMIT = 24  # the Hertz patch's range: b / R_J [-]; 0: no law here uses the patch
+N_PARAMS = 25
 
 # Columns of JournalScratch.contact (the last evaluation).
 C_EX = 0  # eccentricity [m]
@@ -139,17 +141,13 @@ T_FRICTION_ENERGY = 5  # energy dissipated by friction [J]
 T_WORN_VOLUME = 6  # volume removed from both surfaces [m^3]
 T_SLIDING = 7  # sliding distance while in contact and sliding [m]
 T_FILM_ENERGY = 8  # energy dissipated in the lubricant film [J]
-T_PATCH_TIME = 9  # time the Hertz half-width exceeded PATCH_LIMIT R_J [s]
+T_PATCH_TIME = 9  # time the Hertz half-width exceeded P_PATCH_LIMIT R_J [s]
 T_PATCH_MAX = 10  # largest Hertz half-width / R_J [-]
 T_DEPTH_TIME = 11  # time the penetration exceeded the law's range [s]
 T_DEPTH_MAX = 12  # largest penetration / c [-]
 T_FILM_TIME = 13  # time the eccentricity ratio exceeded the film's range [s]
 T_FILM_MAX = 14  # largest eccentricity ratio [-]
 N_TOTALS = 15
-
-# The laws' ranges (outside them a joint is still computed, and the run reports it).
-PATCH_LIMIT = 0.1  # Hertz half-width b / R_J: a line contact's patch small against the pin
-DEPTH_LIMIT = 0.1  # penetration / c of Hertz, Liu and the foundation: small against the gap
 
 # Columns of an onset's entry in the impact log.
 IMPACT_SPEED = 0  # penetration rate at onset [m/s]
@@ -409,10 +407,7 @@ def _wear_surfaces(table, state, scratch, k, ds):
     p = table.params[k]
     law = table.ints[k]
     f_n = c[C_FN]
-    if law[I_WEAR] == WearLaw.REYE:  # mu: the friction acting, abs(f_t) / f_n
-        coef = wear_coefficient(law[I_WEAR], abs(c[C_FT]) / f_n, p[P_WEAR])
-    else:
-        coef = wear_coefficient(law[I_WEAR], p[P_WEAR], 0.0)
+    coef = wear_coefficient(law[I_WEAR], abs(c[C_FT]) / f_n, p[P_WEAR])
     sectors = law[I_SECTORS]
     share = p[P_SHARE]
     bearing = state.wear[k, 0, :sectors]
@@ -438,32 +433,19 @@ def _wear_surfaces(table, state, scratch, k, ds):
     )
 
 
-@njit(cache=True)
-def depth_limit(law: int) -> float:
-    """Penetration / c up to which the elastic law ``law`` holds [-].
-
-    Johnson's up to delta_s = 8 e^-3 dR, where it hands over to its tangent; the others up
-    to ``DEPTH_LIMIT`` (small-clearance geometry, and the small-strain fits).
-    """
-    if law == ElasticLaw.JOHNSON:
-        return 8.0 * math.exp(-3.0)
-    return DEPTH_LIMIT
-
-
 @njit(cache=True, no_cpython_wrapper=True)
 def _track_ranges(law, p, c, totals, h):
     """Time and extent of the step [s] beyond the laws' ranges, into totals (T_*_TIME, _MAX).
 
-    The Hertz patch is checked where Hertz's line contact is used (the hertz law, or the
-    hertz and peak wear distributions), the film's eccentricity where the joint is lubricated.
+    The limits are the chosen laws' (``P_DEPTH_LIMIT``, ``P_PATCH_LIMIT``, ``P_BREAKDOWN``):
+    the Hertz patch is checked where a law uses Hertz's line contact, the film's
+    eccentricity where the joint is lubricated.
     """
     if c[C_FN] > 0.0:
-        if law[I_NORMAL] == ElasticLaw.HERTZ or law[I_SPREAD] != SPREAD_FOUNDATION:
+        if p[P_PATCH_LIMIT] > 0.0:
             b, _ = hertz_line_contact(c[C_FN], p[P_RSTAR], p[P_ESTAR], p[P_WIDTH])
-            _beyond(totals, T_PATCH_TIME, T_PATCH_MAX, b / p[P_RJ], PATCH_LIMIT, h)
-        _beyond(
-            totals, T_DEPTH_TIME, T_DEPTH_MAX, c[C_DELTA] / p[P_C], depth_limit(law[I_NORMAL]), h
-        )
+            _beyond(totals, T_PATCH_TIME, T_PATCH_MAX, b / p[P_RJ], p[P_PATCH_LIMIT], h)
+        _beyond(totals, T_DEPTH_TIME, T_DEPTH_MAX, c[C_DELTA] / p[P_C], p[P_DEPTH_LIMIT], h)
     if law[I_LUBRICATION]:
         _beyond(totals, T_FILM_TIME, T_FILM_MAX, c[C_EPS], p[P_BREAKDOWN], h)
 
@@ -496,9 +478,10 @@ def accumulate(table, state, scratch, log, t_old, t_new, q_mid, qd_mid, snap_tim
             _track_peaks(totals, c)
             totals[T_FRICTION_ENERGY] -= c[C_FT] * c[C_VT] * h
             p = table.params[k]
-            if is_sliding(table.ints[k, I_FRICTION], c[C_VT], p[P_F0], p[P_F1], p[P_F2]):
-                sliding_speed = abs(c[C_VT])
-                totals[T_SLIDING] += sliding_speed * h
+            sliding_speed = slip_speed(
+                table.ints[k, I_FRICTION], c[C_VT], p[P_F0], p[P_F1], p[P_F2]
+            )
+            totals[T_SLIDING] += sliding_speed * h
         totals[T_FILM_ENERGY] += c[C_FILM_POWER] * h
         _track_ranges(table.ints[k], table.params[k], c, totals, h)
         t_from = t_old

@@ -76,21 +76,20 @@ import numpy as np
 from numba import njit
 
 from ..kinematics import point_position, rotate
-from ..laws.friction import is_sliding, tangential_force
+from ..laws.friction import slip_speed, tangential_force
 from ..laws.normal import damped, effective_radius, elastic_force
 from ..laws.normal import elastic_energy as law_energy
 from ..laws.segments import add_wear, depth_along
-from ..laws.wear import WearLaw, depth_at, hertz_line_contact, wear_coefficient
-from .journal import PATCH_LIMIT, depth_limit
+from ..laws.wear import depth_at, hertz_line_contact, wear_coefficient
 from .journal_geometry import apply_contact, contact_velocities, eccentricity, surface_angles
 
 # Columns of PinSlotTable.ints.
 I_SLOT = 0  # slot body (-1: ground)
 I_PIN = 1  # pin body
-I_NORMAL = 2  # elastic law code (laws.normal.NORMAL_LAWS)
-I_DAMPING = 3  # damping law code (laws.normal.DAMPING_LAWS)
-I_FRICTION = 4  # friction law code (laws.friction.FRICTION_LAWS)
-I_WEAR = 5  # wear law code (laws.wear.WEAR_LAWS)
+I_NORMAL = 2  # elastic law code (its record: model.laws.NORMAL)
+I_DAMPING = 3  # damping law code (model.laws.DAMPING)
+I_FRICTION = 4  # friction law code (model.laws.FRICTION)
+I_WEAR = 5  # wear law code (model.laws.WEAR)
 I_FEEDBACK = 6  # 1: the worn depths feed back into the penetration
 I_SEGMENTS = 7  # segments of each side
 I_END_SECTORS = 8  # sectors of each end's half circle
@@ -121,7 +120,9 @@ P_WIDTH = 19  # width out of the plane [m]
 P_ESTAR = 20  # contact modulus E* [Pa]
 P_MIN_SPEED = 21  # floor of the impact speed [m/s]
 P_TOL = 22  # contact tolerance [m]
-N_PARAMS = 23
+P_DEPTH_LIMIT = 23  # the elastic law's range: penetration / c [-] (its record's)
+P_PATCH_LIMIT = 24  # the Hertz patch's range: b / R_p [-]; 0: not checked
+N_PARAMS = 25
 
 # Worn surfaces, the first index of PinSlotState.wear; the slot's four are also the surface
 # codes of the contact (C_SURFACE, IMPACT_SURFACE).
@@ -160,9 +161,9 @@ T_DAMPING_ENERGY = 4  # energy dissipated by the damping, (f_n - f_e) delta_dot 
 T_FRICTION_ENERGY = 5  # energy dissipated by friction [J]
 T_WORN_VOLUME = 6  # volume removed from the slot and the pin [m^3]
 T_SLIDING = 7  # sliding distance while in contact and sliding [m]
-T_PATCH_TIME = 8  # time the Hertz half-width exceeded journal.PATCH_LIMIT R_p [s]
+T_PATCH_TIME = 8  # time the Hertz half-width exceeded P_PATCH_LIMIT R_p [s]
 T_PATCH_MAX = 9  # largest Hertz half-width / R_p [-]
-T_DEPTH_TIME = 10  # time the penetration exceeded the law's range (journal.depth_limit) [s]
+T_DEPTH_TIME = 10  # time the penetration exceeded P_DEPTH_LIMIT c [s]
 T_DEPTH_MAX = 11  # largest penetration / c [-]
 N_TOTALS = 12
 
@@ -389,10 +390,7 @@ def _wear(table, state, scratch, k, ds):
     c = scratch.contact[k]
     law = table.ints[k]
     p = table.params[k]
-    if law[I_WEAR] == WearLaw.REYE:  # mu: the friction acting, abs(f_t) / f_n
-        coef = wear_coefficient(law[I_WEAR], abs(c[C_FT]) / c[C_FN], p[P_WEAR])
-    else:
-        coef = wear_coefficient(law[I_WEAR], p[P_WEAR], 0.0)
+    coef = wear_coefficient(law[I_WEAR], abs(c[C_FT]) / c[C_FN], p[P_WEAR])
     volume = coef * c[C_FN] * ds
     share = p[P_SHARE]
     slot = int(c[C_SURFACE])
@@ -420,12 +418,12 @@ def _track_ranges(law, p, c, totals, h):
     r_star = p[P_RP] if on_side else effective_radius(p[P_RS], p[P_RP])
     b, _ = hertz_line_contact(c[C_FN], r_star, p[P_ESTAR], p[P_WIDTH])
     ranges = (
-        (T_PATCH_TIME, T_PATCH_MAX, b / p[P_RP], PATCH_LIMIT),
-        (T_DEPTH_TIME, T_DEPTH_MAX, c[C_DELTA] / p[P_C], depth_limit(law[I_NORMAL])),
+        (T_PATCH_TIME, T_PATCH_MAX, b / p[P_RP], p[P_PATCH_LIMIT]),
+        (T_DEPTH_TIME, T_DEPTH_MAX, c[C_DELTA] / p[P_C], p[P_DEPTH_LIMIT]),
     )
     for time_slot, max_slot, ratio, limit in ranges:
         totals[max_slot] = max(totals[max_slot], ratio)
-        if ratio > limit:
+        if limit > 0.0 and ratio > limit:
             totals[time_slot] += h
 
 
@@ -449,9 +447,10 @@ def accumulate(table, state, scratch, log, t_old, t_new, q_mid, qd_mid, snap_tim
             totals[T_CONTACT_TIME] += h
             _track_peaks(totals, c)
             totals[T_FRICTION_ENERGY] -= c[C_FT] * c[C_VT] * h
-            if is_sliding(table.ints[k, I_FRICTION], c[C_VT], p[P_F0], p[P_F1], p[P_F2]):
-                sliding_speed = abs(c[C_VT])
-                totals[T_SLIDING] += sliding_speed * h
+            sliding_speed = slip_speed(
+                table.ints[k, I_FRICTION], c[C_VT], p[P_F0], p[P_F1], p[P_F2]
+            )
+            totals[T_SLIDING] += sliding_speed * h
         _track_ranges(table.ints[k], p, c, totals, h)
         t_from = t_old
         s = first

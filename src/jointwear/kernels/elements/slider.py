@@ -43,20 +43,20 @@ import numpy as np
 from numba import njit
 
 from ..kinematics import angle, point_position
-from ..laws.friction import is_sliding, tangential_force
+from ..laws.friction import slip_speed, tangential_force
 from ..laws.normal import damped, elastic_force
 from ..laws.normal import elastic_energy as law_energy
 from ..laws.segments import add_wear, depth_along
-from ..laws.wear import WearLaw, wear_coefficient
+from ..laws.wear import wear_coefficient
 from .point_loads import apply_force_at
 
 # Columns of SliderTable.ints.
 I_GUIDE = 0  # guide body (-1: ground)
 I_SLIDER = 1  # slider body
-I_NORMAL = 2  # elastic law code (laws.normal.NORMAL_LAWS)
-I_DAMPING = 3  # damping law code (laws.normal.DAMPING_LAWS)
-I_FRICTION = 4  # friction law code (laws.friction.FRICTION_LAWS)
-I_WEAR = 5  # wear law code (laws.wear.WEAR_LAWS)
+I_NORMAL = 2  # elastic law code (its record: model.laws.NORMAL)
+I_DAMPING = 3  # damping law code (model.laws.DAMPING)
+I_FRICTION = 4  # friction law code (model.laws.FRICTION)
+I_WEAR = 5  # wear law code (model.laws.WEAR)
 I_FEEDBACK = 6  # 1: the worn depths feed back into the penetrations
 I_SEGMENTS = 7  # segments of each surface
 I_ENDS = 8  # 1: a finite guide, whose edges touch the slider's faces
@@ -399,10 +399,7 @@ def _wear(table, state, k, i, c, ds):
     """Remove the wear of sliding distance ds [m] under contact i; return the volume [m^3]."""
     law = table.ints[k]
     p = table.params[k]
-    if law[I_WEAR] == WearLaw.REYE:
-        coef = wear_coefficient(law[I_WEAR], abs(c[C_FT]) / c[C_FN], p[P_WEAR])
-    else:
-        coef = wear_coefficient(law[I_WEAR], p[P_WEAR], 0.0)
+    coef = wear_coefficient(law[I_WEAR], abs(c[C_FT]) / c[C_FN], p[P_WEAR])
     volume = coef * c[C_FN] * ds
     segments = law[I_SEGMENTS]
     top = i % 2 == 0
@@ -439,9 +436,8 @@ def accumulate(table, state, scratch, log, t_old, t_new, q_mid, qd_mid, snap_tim
             totals[T_MAX_DELTA] = max(totals[T_MAX_DELTA], c[C_DELTA])
             totals[T_FRICTION_ENERGY] -= c[C_FT] * c[C_VT] * h
             p = table.params[k]
-            if is_sliding(table.ints[k, I_FRICTION], c[C_VT], p[P_F0], p[P_F1], p[P_F2]):
-                speeds[i] = abs(c[C_VT])
-                totals[T_SLIDING] += speeds[i] * h
+            speeds[i] = slip_speed(table.ints[k, I_FRICTION], c[C_VT], p[P_F0], p[P_F1], p[P_F2])
+            totals[T_SLIDING] += speeds[i] * h
         if touching:
             totals[T_CONTACT_TIME] += h
         t_from = t_old

@@ -10,7 +10,7 @@
 | g(alpha) | local gap c + w_B(theta_b + alpha) + w_J(theta_j + alpha) - e cos alpha | m | |
 | u | interference max(0, -g) | m | |
 | young, nu | Young's modulus and Poisson's ratio of the elastic layer | Pa, - | |
-| k_f | foundation modulus (1 - nu) E / ((1 + nu)(1 - 2 nu)) | Pa | Johnson (1985) |
+| k_f | foundation modulus (1 - nu) E / ((1 + nu)(1 - 2 nu)) (``model.laws``) | Pa | Johnson 1985 |
 | h | thickness of the elastic layer on its rigid substrate | m | |
 | k_over_h | foundation stiffness per unit thickness k_f / h; p = k_over_h u | Pa/m | |
 | alpha0 | half-angle of the arc where contact is possible, acos(c / e) | rad | |
@@ -70,17 +70,6 @@ from .wear import depth_at, sector_of
 _TWO_PI = 2.0 * math.pi
 _MIN_POINTS = 32
 _MAX_POINTS = 2048
-
-
-@njit(cache=True)
-def foundation_modulus(young: float, nu: float) -> float:
-    """Foundation modulus k_f = (1 - nu) E / ((1 + nu)(1 - 2 nu)) [Pa] of a layer.
-
-    The stress per unit strain of a thin layer bonded to a rigid substrate and compressed
-    normal to itself with no lateral strain (Johnson 1985); divide by the layer thickness
-    for the stiffness per unit thickness k_over_h [Pa/m].
-    """
-    return (1.0 - nu) * young / ((1.0 + nu) * (1.0 - 2.0 * nu))
 
 
 @njit(cache=True)

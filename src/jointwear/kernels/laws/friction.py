@@ -12,7 +12,8 @@
 | f_t | friction force along t on the journal (the bearing gets -f_t) | N | Eq. 17 |
 
 Every law returns f_t = -mu(abs(v_t)) f_n sign(v_t): it opposes sliding and vanishes at
-v_t = 0. The dispatcher ``tangential_force(law, v_t, f_n, c_f, p0, p1, p2)`` reads:
+v_t = 0. The dispatchers ``tangential_force(law, v_t, f_n, c_f, p0, p1, p2)`` and
+``slip_speed(law, v_t, p0, p1, p2)`` read:
 
 | law | p0 | p1 | p2 | sticking (no wear) when |
 |---|---|---|---|---|
@@ -48,9 +49,16 @@ MSC Software, Adams/Solver reference, CONTACT statement: friction force.
 
 from enum import IntEnum
 
+import numpy as np
 from numba import njit
 
-from .registry import Key, Law
+
+class FrictionLaw(IntEnum):
+    """Codes of the friction laws (``model.laws.friction.FRICTION``, whose records name them)."""
+
+    COULOMB = 0
+    AMBROSIO = 1
+    STICK_SLIP = 2
 
 
 @njit(cache=True)
@@ -124,76 +132,58 @@ def stick_slip(v_t: float, f_n: float, c_f: float, mu_s: float, dv: float, v_tr:
     return -mu * f_n * _sign(v_t)
 
 
-def _pack_coulomb(values: dict) -> tuple[float, float, float]:
-    return (values["regularisation_speed"], 0.0, 0.0)
+@njit(cache=True)
+def coulomb_sliding(v_t: float) -> float:
+    """Sliding speed [m/s] of Coulomb friction: abs(v_t), sticking only at v_t = 0."""
+    return abs(v_t)
 
 
-def _pack_ambrosio(values: dict) -> tuple[float, float, float]:
-    v0, v1 = values["no_friction_speed"], values["full_friction_speed"]
-    if v1 <= v0:
-        raise ValueError("full_friction_speed must be larger than no_friction_speed")
-    return (v0, v1, 0.0)
+@njit(cache=True)
+def ambrosio_sliding(v_t: float, v0: float) -> float:
+    """Sliding speed [m/s] under Ambrosio's law: abs(v_t), 0 up to v0 (where c_d = 0)."""
+    s = abs(v_t)
+    return s if s > v0 else 0.0
 
 
-def _pack_stick_slip(values: dict) -> tuple[float, float, float]:
-    if values.get("static_friction_coefficient") is None:
-        raise ValueError("needs static_friction_coefficient")
-    keys = ("static_friction_coefficient", "stiction_speed", "transition_speed")
-    return tuple(float(values[key]) for key in keys)
+@njit(cache=True)
+def stick_slip_sliding(v_t: float, dv: float) -> float:
+    """Sliding speed [m/s] under stick-slip friction: abs(v_t), 0 inside the stick band dv."""
+    s = abs(v_t)
+    return s if s > dv else 0.0
 
 
-FRICTION_LAWS = (
-    Law(
-        "coulomb", 0,
-        (Key("regularisation_speed", "m/s", 1e-4, positive=True),),
-        _pack_coulomb, "c_f F_N, linear through zero below the regularisation speed",
-    ),
-    Law(
-        "ambrosio", 1,
-        (
-            Key("no_friction_speed", "m/s", 1e-4),
-            Key("full_friction_speed", "m/s", 1e-2, positive=True),
-        ),
-        _pack_ambrosio, "c_f c_d(v_T) F_N, Ambrosio's dynamic correction (Flores 2009, Eq. 19)",
-    ),
-    Law(
-        "stick_slip", 2,
-        (
-            Key("static_friction_coefficient", "", None),
-            Key("stiction_speed", "m/s", 1e-4, positive=True),
-            Key("transition_speed", "m/s", 1e-2, positive=True),
-        ),
-        _pack_stick_slip, "velocity-based Karnopp-type stick-slip (Karnopp 1985)",
-    ),
-)  # fmt: skip
-FrictionLaw = IntEnum("FrictionLaw", {law.name.upper(): law.code for law in FRICTION_LAWS})
+# The dispatchers: one branch per code, NaN for a code without a law, never another law.
 
 
 @njit(cache=True)
 def tangential_force(
     law: int, v_t: float, f_n: float, c_f: float, p0: float, p1: float, p2: float
 ) -> float:
-    """Friction force f_t [N] by the law with code ``law`` (``FRICTION_LAWS``).
+    """Friction force f_t [N] by the law with code ``law`` (``FrictionLaw``); NaN.
 
     p0, p1, p2 as in the module docstring's table, packed by the law's record.
     """
+    if law == FrictionLaw.COULOMB:
+        return coulomb(v_t, f_n, c_f, p0)
     if law == FrictionLaw.AMBROSIO:
         return ambrosio(v_t, f_n, c_f, p0, p1)
     if law == FrictionLaw.STICK_SLIP:
         return stick_slip(v_t, f_n, c_f, p0, p1, p2)
-    return coulomb(v_t, f_n, c_f, p0)
+    return np.nan
 
 
 @njit(cache=True)
-def is_sliding(law: int, v_t: float, p0: float, p1: float, p2: float) -> bool:
-    """Whether the contact slides (and so wears) at sliding speed v_t [m/s].
+def slip_speed(law: int, v_t: float, p0: float, p1: float, p2: float) -> float:
+    """Speed [m/s] at which the contact slides, and so wears: abs(v_t), or 0 while it sticks.
 
     Same law code and parameters as ``tangential_force``: sticking is abs(v_t) <= v0 for
-    AMBROSIO (c_d = 0), abs(v_t) <= dv for STICK_SLIP and v_t = 0 for COULOMB.
+    AMBROSIO (c_d = 0), abs(v_t) <= dv for STICK_SLIP and v_t = 0 for COULOMB; NaN for a
+    code without a law.
     """
-    s = abs(v_t)
+    if law == FrictionLaw.COULOMB:
+        return coulomb_sliding(v_t)
     if law == FrictionLaw.AMBROSIO:
-        return s > p0
+        return ambrosio_sliding(v_t, p0)
     if law == FrictionLaw.STICK_SLIP:
-        return s > p1
-    return s > 0.0
+        return stick_slip_sliding(v_t, p1)
+    return np.nan

@@ -100,37 +100,18 @@ Marcel Dekker (2004) (Sommerfeld substitution, half-Sommerfeld long bearing, Pet
 import math
 from enum import IntEnum
 
+import numpy as np
 from numba import njit
-
-from .registry import Key, Law, pack_in_order
-
-VISCOSITY = Key(
-    "viscosity", "Pa*s", None, positive=True,
-    help="dynamic viscosity of the lubricant, e.g. '0.02 Pa*s'",
-)  # fmt: skip
-BREAKDOWN = Key(
-    "film_breakdown", "", 0.95, positive=True, high=0.999,
-    help="eccentricity ratio where the film starts handing over to solid contact",
-)  # fmt: skip
-LUBRICATION_LAWS = (
-    Law("none", 0, (), lambda values: (0.0, 0.0), "dry joint"),
-    Law(
-        "short_bearing", 1, (VISCOSITY, BREAKDOWN), pack_in_order(VISCOSITY, BREAKDOWN),
-        "pi-film short bearing (Pinkus, Sternlicht 1961; Flores et al. 2009)",
-    ),
-    Law(
-        "long_bearing", 2, (VISCOSITY, BREAKDOWN), pack_in_order(VISCOSITY, BREAKDOWN),
-        "pi-film long (half-Sommerfeld) bearing (Hamrock et al. 2004; Flores et al. 2009)",
-    ),
-)  # fmt: skip
 
 
 class FilmModel(IntEnum):
-    """Approximation of the Reynolds equation: short (L/D small) or long (L/D large) bearing.
+    """Codes of the lubrication laws (``model.laws.lubrication.LUBRICATION``).
 
-    The codes are those of ``LUBRICATION_LAWS``; 0 is a dry joint.
+    NONE is a dry joint (no film: the element never asks for one); the films approximate the
+    Reynolds equation for a short (L/D small) or a long (L/D large) bearing.
     """
 
+    NONE = 0
     SHORT_BEARING = 1
     LONG_BEARING = 2
 
@@ -230,10 +211,15 @@ def film_force_components(
     width: float,
     c: float,
 ) -> tuple[float, float]:
-    """Film force (f_r, f_t) [N] on the journal by ``model`` (``FilmModel``)."""
+    """Film force (f_r, f_t) [N] on the journal by ``model`` (``FilmModel``).
+
+    (NaN, NaN) for a code without a film (a dry joint has none), never another film.
+    """
+    if model == FilmModel.SHORT_BEARING:
+        return short_bearing_forces(eps, eps_dot, gamma_dot, w, mu, r, width, c)
     if model == FilmModel.LONG_BEARING:
         return long_bearing_forces(eps, eps_dot, gamma_dot, w, mu, r, width, c)
-    return short_bearing_forces(eps, eps_dot, gamma_dot, w, mu, r, width, c)
+    return np.nan, np.nan
 
 
 @njit(cache=True)

@@ -54,12 +54,28 @@ from enum import IntEnum
 import numpy as np
 from numba import njit
 
-from .registry import Key, Law, pack_in_order
-
 # Gauss-Legendre nodes and weights on [0, 1], for the elastic energy of Liu's law.
 _GL_X, _GL_W = np.polynomial.legendre.leggauss(12)
 _GL_X = 0.5 * (_GL_X + 1.0)
 _GL_W = 0.5 * _GL_W
+
+
+class ElasticLaw(IntEnum):
+    """Codes of the elastic laws (``model.laws.normal.NORMAL``, whose records name them)."""
+
+    HERTZ = 0
+    JOHNSON = 1
+    LIU = 2
+    ELASTIC_FOUNDATION = 3
+
+
+class Damping(IntEnum):
+    """Codes of the damping laws (``model.laws.normal.DAMPING``)."""
+
+    NONE = 0
+    LANKARANI_NIKRAVESH = 1
+    HUNT_CROSSLEY = 2
+    FLORES2011 = 3
 
 
 # ----------------------------------------------------------------------- elastic laws
@@ -189,68 +205,94 @@ def foundation_on_circles(delta: float, k: float, d_r: float, width: float) -> f
 
 
 @njit(cache=True)
-def elastic_force(
-    law: int, delta: float, k: float, n: float, e_star: float, d_r: float, width: float
-) -> float:
-    """Elastic force [N] by the law with code ``law`` (``NORMAL_LAWS``).
-
-    HERTZ is the power law K delta^n; ELASTIC_FOUNDATION is its closed form on unworn
-    circles with k = (K_f / h) R [Pa] (the joint integrates the worn surfaces itself).
-    """
-    if law == ElasticLaw.JOHNSON:
-        return johnson(delta, e_star, d_r, width)
-    if law == ElasticLaw.LIU:
-        return liu(delta, e_star, d_r, width)
-    if law == ElasticLaw.ELASTIC_FOUNDATION:
-        return foundation_on_circles(delta, k, d_r, width)
-    return hertz(delta, k, n)
-
-
-@njit(cache=True)
-def elastic_stiffness(
-    law: int, delta: float, k: float, n: float, e_star: float, d_r: float, width: float
-) -> float:
-    """Contact stiffness dF/d(delta) [N/m] of the elastic law ``law`` at delta [m]."""
+def hertz_stiffness(delta: float, k: float, n: float) -> float:
+    """Stiffness dF/d(delta) = K n delta^(n - 1) [N/m] of the power law (0 without contact)."""
     if delta <= 0.0:
         return 0.0
-    if law == ElasticLaw.JOHNSON:
-        f = johnson_load(delta, e_star, d_r)
-        f_s, _ = johnson_switch(e_star, d_r)
-        if f >= f_s:
-            return math.pi * e_star * width
-        return math.pi * e_star * width / (math.log(4.0 * math.pi * e_star * d_r / f) - 2.0)
-    if law == ElasticLaw.LIU:
-        c = 0.5 * math.pi * e_star * width / math.sqrt(2.0)
-        return c * math.sqrt(delta) * (1.5 * d_r + delta) / (d_r + delta) ** 1.5
-    if law == ElasticLaw.ELASTIC_FOUNDATION:
-        e = d_r + delta
-        a = math.acos(d_r / e)
-        return k * width * (a + math.sin(a) * math.cos(a))
     return k * n * delta ** (n - 1.0)
 
 
 @njit(cache=True)
-def elastic_energy(
-    law: int, delta: float, k: float, n: float, e_star: float, d_r: float, width: float
-) -> float:
-    """Elastic energy [J] stored at penetration delta [m], the integral of the force."""
+def hertz_energy(delta: float, k: float, n: float) -> float:
+    """Elastic energy K delta^(n + 1) / (n + 1) [J] of the power law (0 without contact)."""
     if delta <= 0.0:
         return 0.0
-    if law == ElasticLaw.JOHNSON:
-        f_s, delta_s = johnson_switch(e_star, d_r)
-        f = min(johnson_load(delta, e_star, d_r), f_s)  # U(f) = L f^2 / (2 pi E*) [ln - 3/2]
-        u = (
-            width
-            * f
-            * f
-            / (2.0 * math.pi * e_star)
-            * (math.log(4.0 * math.pi * e_star * d_r / f) - 1.5)
-        )
-        over = max(0.0, delta - delta_s)
-        return u + width * (f_s * over + 0.5 * math.pi * e_star * over * over)
-    if law == ElasticLaw.HERTZ:
-        return k * delta ** (n + 1.0) / (n + 1.0)
-    energy = 0.0  # s = delta t^2: the integrand 2 delta t F(delta t^2) is smooth in t
+    return k * delta ** (n + 1.0) / (n + 1.0)
+
+
+@njit(cache=True)
+def johnson_stiffness(delta: float, e_star: float, d_r: float, width: float) -> float:
+    """Stiffness [N/m] of Johnson's law: pi E* L / (ln(4 pi E* dR / f) - 2), pi E* L beyond f_s."""
+    if delta <= 0.0:
+        return 0.0
+    f = johnson_load(delta, e_star, d_r)
+    f_s, _ = johnson_switch(e_star, d_r)
+    if f >= f_s:
+        return math.pi * e_star * width
+    return math.pi * e_star * width / (math.log(4.0 * math.pi * e_star * d_r / f) - 2.0)
+
+
+@njit(cache=True)
+def johnson_energy(delta: float, e_star: float, d_r: float, width: float) -> float:
+    """Elastic energy [J] of Johnson's law, U(f) = L f^2 / (2 pi E*) [ln(4 pi E* dR / f) - 3/2].
+
+    Beyond delta_s the tangent line's energy is added.
+    """
+    if delta <= 0.0:
+        return 0.0
+    f_s, delta_s = johnson_switch(e_star, d_r)
+    f = min(johnson_load(delta, e_star, d_r), f_s)
+    u = (
+        width
+        * f
+        * f
+        / (2.0 * math.pi * e_star)
+        * (math.log(4.0 * math.pi * e_star * d_r / f) - 1.5)
+    )
+    over = max(0.0, delta - delta_s)
+    return u + width * (f_s * over + 0.5 * math.pi * e_star * over * over)
+
+
+@njit(cache=True)
+def liu_stiffness(delta: float, e_star: float, d_r: float, width: float) -> float:
+    """Stiffness [N/m] of Liu et al.'s law, the derivative of ``liu``."""
+    if delta <= 0.0:
+        return 0.0
+    c = 0.5 * math.pi * e_star * width / math.sqrt(2.0)
+    return c * math.sqrt(delta) * (1.5 * d_r + delta) / (d_r + delta) ** 1.5
+
+
+@njit(cache=True)
+def liu_energy(delta: float, e_star: float, d_r: float, width: float) -> float:
+    """Elastic energy [J] of Liu et al.'s law, by quadrature of its force."""
+    return _energy_by_quadrature(ElasticLaw.LIU, delta, 0.0, 0.0, e_star, d_r, width)
+
+
+@njit(cache=True)
+def foundation_stiffness(delta: float, k: float, d_r: float, width: float) -> float:
+    """Stiffness [N/m] of the foundation on unworn circles, k L (a0 + sin a0 cos a0)."""
+    if delta <= 0.0:
+        return 0.0
+    e = d_r + delta
+    a = math.acos(d_r / e)
+    return k * width * (a + math.sin(a) * math.cos(a))
+
+
+@njit(cache=True)
+def foundation_energy(delta: float, k: float, d_r: float, width: float) -> float:
+    """Elastic energy [J] of the foundation on unworn circles, by quadrature of its force."""
+    return _energy_by_quadrature(ElasticLaw.ELASTIC_FOUNDATION, delta, k, 0.0, 0.0, d_r, width)
+
+
+@njit(cache=True)
+def _energy_by_quadrature(law, delta, k, n, e_star, d_r, width):
+    """The integral of ``elastic_force`` from 0 to delta [J], 12-point Gauss-Legendre.
+
+    With s = delta t^2 the integrand 2 delta t F(delta t^2) is smooth in t.
+    """
+    if delta <= 0.0:
+        return 0.0
+    energy = 0.0
     for i in range(_GL_X.shape[0]):
         t = _GL_X[i]
         energy += (
@@ -259,7 +301,69 @@ def elastic_energy(
     return energy
 
 
+# The dispatchers below: one branch per code, NaN for a code without a law (a NaN force is
+# caught by the run's non-finite check), never another law.
+
+
+@njit(cache=True)
+def elastic_force(
+    law: int, delta: float, k: float, n: float, e_star: float, d_r: float, width: float
+) -> float:
+    """Elastic force [N] by the law with code ``law`` (``ElasticLaw``); NaN for another code.
+
+    HERTZ is the power law K delta^n; ELASTIC_FOUNDATION is its closed form on unworn
+    circles with k = (K_f / h) R [Pa] (the joint integrates the worn surfaces itself).
+    """
+    if law == ElasticLaw.HERTZ:
+        return hertz(delta, k, n)
+    if law == ElasticLaw.JOHNSON:
+        return johnson(delta, e_star, d_r, width)
+    if law == ElasticLaw.LIU:
+        return liu(delta, e_star, d_r, width)
+    if law == ElasticLaw.ELASTIC_FOUNDATION:
+        return foundation_on_circles(delta, k, d_r, width)
+    return np.nan
+
+
+@njit(cache=True)
+def elastic_stiffness(
+    law: int, delta: float, k: float, n: float, e_star: float, d_r: float, width: float
+) -> float:
+    """Contact stiffness dF/d(delta) [N/m] of the elastic law ``law`` at delta [m]; NaN."""
+    if law == ElasticLaw.HERTZ:
+        return hertz_stiffness(delta, k, n)
+    if law == ElasticLaw.JOHNSON:
+        return johnson_stiffness(delta, e_star, d_r, width)
+    if law == ElasticLaw.LIU:
+        return liu_stiffness(delta, e_star, d_r, width)
+    if law == ElasticLaw.ELASTIC_FOUNDATION:
+        return foundation_stiffness(delta, k, d_r, width)
+    return np.nan
+
+
+@njit(cache=True)
+def elastic_energy(
+    law: int, delta: float, k: float, n: float, e_star: float, d_r: float, width: float
+) -> float:
+    """Elastic energy [J] stored at penetration delta [m], the integral of the force; NaN."""
+    if law == ElasticLaw.HERTZ:
+        return hertz_energy(delta, k, n)
+    if law == ElasticLaw.JOHNSON:
+        return johnson_energy(delta, e_star, d_r, width)
+    if law == ElasticLaw.LIU:
+        return liu_energy(delta, e_star, d_r, width)
+    if law == ElasticLaw.ELASTIC_FOUNDATION:
+        return foundation_energy(delta, k, d_r, width)
+    return np.nan
+
+
 # ----------------------------------------------------------------------- damping laws
+
+
+@njit(cache=True)
+def undamped(c_e: float) -> float:
+    """Hysteresis factor chi = 0 of an elastic contact (no damping) [-]."""
+    return 0.0
 
 
 @njit(cache=True)
@@ -296,106 +400,27 @@ def flores2011(c_e: float) -> float:
 
 @njit(cache=True)
 def hysteresis_factor(damping: int, c_e: float) -> float:
-    """Hysteresis factor chi [-] of the damping law ``damping`` (``DAMPING_LAWS``), 0: NONE."""
+    """Hysteresis factor chi [-] of the damping law with code ``damping`` (``Damping``); NaN."""
+    if damping == Damping.NONE:
+        return undamped(c_e)
     if damping == Damping.LANKARANI_NIKRAVESH:
         return lankarani_nikravesh(c_e)
     if damping == Damping.HUNT_CROSSLEY:
         return hunt_crossley(c_e)
     if damping == Damping.FLORES2011:
         return flores2011(c_e)
-    return 0.0
+    return np.nan
 
 
 @njit(cache=True)
 def damped(
     elastic: float, delta_dot: float, delta_dot_minus: float, damping: int, c_e: float
 ) -> float:
-    """Normal force [N]: elastic (1 + chi delta_dot / delta_dot_minus), clamped at zero."""
-    if elastic <= 0.0 or delta_dot_minus <= 0.0:
-        return max(elastic, 0.0)
-    chi = hysteresis_factor(damping, c_e)
-    return max(0.0, elastic * (1.0 + chi * delta_dot / delta_dot_minus))
+    """Normal force [N]: elastic (1 + chi delta_dot / delta_dot_minus), clamped at zero.
 
-
-# ----------------------------------------------------------------------- stiffness formulas
-
-
-@njit(cache=True)
-def effective_modulus(e_b: float, nu_b: float, e_j: float, nu_j: float) -> float:
-    """Contact modulus E* [Pa], 1/E* = (1 - nu_b^2)/E_b + (1 - nu_j^2)/E_j (Johnson 1985)."""
-    return 1.0 / ((1.0 - nu_b * nu_b) / e_b + (1.0 - nu_j * nu_j) / e_j)
-
-
-@njit(cache=True)
-def effective_radius(r_b: float, r_j: float) -> float:
-    """Relative radius R* = R_B R_J / (R_B - R_J) [m] of a cylinder inside a cylinder."""
-    return r_b * r_j / (r_b - r_j)
-
-
-@njit(cache=True)
-def internal_cylinder_stiffness(
-    r_b: float, r_j: float, e_b: float, nu_b: float, e_j: float, nu_j: float
-) -> float:
-    """Stiffness K [N/m^1.5] of a journal in a bearing, for use with n = 1.5.
-
-    K = 4 / (3 (h_B + h_J)) sqrt(R_B R_J / (R_B - R_J)), h = (1 - nu^2) / E, which is
-    4/3 E* sqrt(R*) (SPEC sec. 3).
-
-    References
-    ----------
-    Lankarani and Nikravesh (1990), with the relative radius of internal contact as in
-    P. Flores, J. Ambrosio, J.C.P. Claro, H.M. Lankarani, Kinematics and Dynamics of
-    Multibody Systems with Imperfect Joints, Springer (2008); SPEC sec. 3.
+    A NaN (a law's error value) passes through the clamp.
     """
-    e_star = effective_modulus(e_b, nu_b, e_j, nu_j)
-    return 4.0 / 3.0 * e_star * math.sqrt(effective_radius(r_b, r_j))
-
-
-def foundation_modulus(e: float, nu: float) -> float:
-    """K_f = (1 - nu) E / ((1 + nu)(1 - 2 nu)) [Pa] of a Winkler layer (Johnson 1985, 5.3)."""
-    return (1.0 - nu) * e / ((1.0 + nu) * (1.0 - 2.0 * nu))
-
-
-# ----------------------------------------------------------------------- the registries
-
-LAYER = Key(
-    "foundation_thickness", "m", None, positive=True,
-    help="thickness h of the elastic layer, e.g. '2 mm'",
-)  # fmt: skip
-NORMAL_LAWS = (
-    Law("hertz", 0, (), lambda values: (), "K delta^n (Flores 2009, Eq. 18)"),
-    Law(
-        "johnson", 1, (), lambda values: (),
-        "delta = F/(pi E* L) [ln(4 pi E* L dR / F) - 1] (Johnson 1985; Pereira et al. 2011)",
-    ),
-    Law(
-        "liu", 2, (), lambda values: (),
-        "(pi/2) E* L delta sqrt(delta / (2 (dR + delta))) (Liu, Zhang, Yang 2007)",
-    ),
-    Law(
-        "elastic_foundation", 3, (LAYER,), pack_in_order(LAYER),
-        "Winkler layer p = K_f u / h on the worn surfaces (Johnson 1985; Mukras et al. 2010)",
-    ),
-)  # fmt: skip
-ElasticLaw = IntEnum("ElasticLaw", {law.name.upper(): law.code for law in NORMAL_LAWS})
-
-RESTITUTION = Key(
-    "restitution_coefficient", "", None, positive=True, high=1.0,
-    help="coefficient of restitution c_e, 0 < c_e <= 1",
-)  # fmt: skip
-DAMPING_LAWS = (
-    Law("none", 0, (), lambda values: (1.0,), "no damping: elastic contact"),
-    Law(
-        "lankarani_nikravesh", 1, (RESTITUTION,), pack_in_order(RESTITUTION),
-        "f_e [1 + 3 (1 - c_e^2)/4 delta_dot/delta_dot_minus] (Lankarani, Nikravesh 1990)",
-    ),
-    Law(
-        "hunt_crossley", 2, (RESTITUTION,), pack_in_order(RESTITUTION),
-        "f_e [1 + 3 (1 - c_e)/2 delta_dot/delta_dot_minus] (Hunt, Crossley 1975)",
-    ),
-    Law(
-        "flores2011", 3, (RESTITUTION,), pack_in_order(RESTITUTION),
-        "f_e [1 + 8 (1 - c_e)/(5 c_e) delta_dot/delta_dot_minus] (Flores et al. 2011)",
-    ),
-)  # fmt: skip
-Damping = IntEnum("Damping", {law.name.upper(): law.code for law in DAMPING_LAWS})
+    if elastic <= 0.0 or delta_dot_minus <= 0.0:
+        return 0.0 if elastic <= 0.0 else elastic
+    force = elastic * (1.0 + hysteresis_factor(damping, c_e) * delta_dot / delta_dot_minus)
+    return 0.0 if force <= 0.0 else force

@@ -38,7 +38,13 @@ import numpy as np
 from numba import njit
 from numpy.typing import NDArray
 
-from .registry import Key, Law
+
+class WearLaw(IntEnum):
+    """Codes of the wear laws (``model.laws.wear.WEAR``, whose records name them)."""
+
+    ARCHARD = 0
+    REYE = 1
+
 
 _TWO_PI = 2.0 * math.pi
 _QUARTER_PI = 0.25 * math.pi  # (u sqrt(1 - u^2) + asin u) / 2 at u = 1
@@ -60,55 +66,21 @@ def reye(mu: float, tau: float) -> float:
     return mu / tau
 
 
-def _pack_archard(values: dict) -> tuple[float, float]:
-    k = values.get("wear_coefficient")
-    by_hardness = (values.get("dimensionless_wear_coefficient"), values.get("hardness"))
-    if k is None and None in by_hardness:
-        raise ValueError(
-            "needs wear_coefficient (e.g. '8e-14 1/Pa'), or dimensionless_wear_coefficient "
-            "together with hardness"
-        )
-    if k is not None and by_hardness != (None, None):
-        raise ValueError(
-            "give wear_coefficient, or dimensionless_wear_coefficient with hardness, not both"
-        )
-    return (k if k is not None else by_hardness[0] / by_hardness[1], 0.0)
-
-
-def _pack_reye(values: dict) -> tuple[float, float]:
-    if values.get("shear_strength") is None:
-        raise ValueError("needs shear_strength (a pressure, e.g. '300 MPa')")
-    return (values["shear_strength"], 0.0)
-
-
-WEAR_LAWS = (
-    Law(
-        "archard", 0,
-        (
-            Key("wear_coefficient", "1/Pa", None),
-            Key("dimensionless_wear_coefficient", "", None),
-            Key("hardness", "Pa", None, positive=True),
-        ),
-        _pack_archard, "dh/ds = k p (Archard 1953; Flores 2009, Eq. 13)",
-    ),
-    Law(
-        "reye", 1,
-        (Key("shear_strength", "Pa", None, positive=True),),
-        _pack_reye, "dh/ds = mu p / tau, mu = |F_T| / F_N (Flores 2009, Eq. 9)",
-    ),
-)  # fmt: skip
-WearLaw = IntEnum("WearLaw", {law.name.upper(): law.code for law in WEAR_LAWS})
+# The dispatcher: one branch per code, NaN for a code without a law, never another law.
 
 
 @njit(cache=True)
-def wear_coefficient(law: int, p0: float, p1: float) -> float:
-    """Depth-rate coefficient [1/Pa] by the law with code ``law`` (``WEAR_LAWS``).
+def wear_coefficient(law: int, mu: float, p0: float) -> float:
+    """Depth-rate coefficient [1/Pa] by the law with code ``law`` (``WearLaw``); NaN.
 
-    ARCHARD: p0 = k_wear [1/Pa]. REYE: p0 = mu, p1 = tau [Pa].
+    mu [-] is the friction acting, abs(f_t) / f_n, which Reye's law reads; p0 is the law's
+    packed parameter: Archard's k_wear [1/Pa], Reye's tau [Pa].
     """
+    if law == WearLaw.ARCHARD:
+        return archard(p0)
     if law == WearLaw.REYE:
-        return reye(p0, p1)
-    return archard(p0)
+        return reye(mu, p0)
+    return np.nan
 
 
 @njit(cache=True)
