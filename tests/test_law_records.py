@@ -14,7 +14,8 @@ import pytest
 
 import jointwear as jw
 from jointwear.citations import REFERENCES
-from jointwear.model.clearance import _KEY_TYPES, Clearance
+from jointwear.joints.revolute.schema import RevoluteClearance as Clearance
+from jointwear.model.clearance import _KEY_TYPES
 from jointwear.model.laws import EVERY, NORMAL
 from jointwear.model.laws.record import ECCENTRICITY, HERTZ_PATCH, PENETRATION, SHAPES, resolve
 

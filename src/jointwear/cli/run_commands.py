@@ -33,7 +33,7 @@ if TYPE_CHECKING:
 
     from ..joints import ClearanceKind
     from ..model import Model
-    from ..model.clearance import ContactKeys
+    from ..model.clearance import ClearanceTable
     from ..results import Results
 
 PROGRESS_AFTER_S = 1.0  # show a progress bar only for runs longer than this
@@ -259,7 +259,7 @@ def _clearance_table(kind: ClearanceKind, joint: object, model: Model, y0: NDArr
     return _filled(table, [*rows, *_law_rows(joint.clearance, table)])
 
 
-def _law_rows(clearance: ContactKeys, table: Table) -> list[tuple]:
+def _law_rows(clearance: ClearanceTable, table: Table) -> list[tuple]:
     """Rows of the friction coefficient and each chosen law with its keys; the caption too."""
     from ..model.clearance import FAMILIES
 

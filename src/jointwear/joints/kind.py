@@ -7,7 +7,9 @@ clearance, and one compiled module in ``kernels/elements/`` (the contact element
 a kind. A kind gives:
 
 1. ``name``: the joint ``type`` of the model file (``"revolute"``), also the key of its
-   arrays in a ``RunState`` and in the run's tables; ``kernel``: its compiled module's name.
+   arrays in a ``RunState`` and in the run's tables; ``schema``: its joint's table (a
+   ``model.tables.JointTable`` with ``type``, ``kind``, the ideal joint's ``JointKind``, and
+   ``clearance``, a ``model.clearance.ClearanceTable``); ``kernel``: its compiled module.
 2. ``row(joint, model, bodies, angle0)``: its row of the kernel tables (integers and SI
    parameters); ``start_problems``: why a joint cannot start from the assembled pose.
 3. ``columns(joint)``: its time-series columns (without the joint's name);
@@ -66,6 +68,7 @@ class ClearanceKind:
     """A joint type with clearance (the module docstring lists what it gives)."""
 
     name: str = ""
+    schema: type = object  # the joint's table in the model file
     kernel: str = ""  # the compiled module, ``jointwear.kernels.elements.<kernel>``
     wear_position: str = ""  # wear table column of a row's place on its surface
     impact_columns: tuple[str, ...] = ()  # impact table columns of its own
@@ -77,6 +80,9 @@ class ClearanceKind:
     animation_module: str = ""  # its drawing in the animation: ``actor``, ``title``, and
     # ``ideal_actor`` if its ideal joints have a drawing of their own
     pins_points: bool = False  # whether its ideal joint holds its two points together
+    older_state_names: dict[str, str] = MappingProxyType({})  # restart arrays' names in
+    # states saved before the kinds were keyed by name (``results.run_state``)
+    slides: bool = False  # whether a distance driver can prescribe its ideal joint's slide
     citations: tuple[str, ...] = ()  # keys of ``citations.REFERENCES`` behind the kind's model
     surfaces: tuple[str, ...] = ()  # its worn surfaces, in the order reports list them
     range_words: dict[str, str] = MappingProxyType({})  # outside_law_ranges' checks in words

@@ -1,14 +1,12 @@
-"""Schema of a revolute joint's ``[joints.clearance]`` table (docs/model-format.md).
+"""What every ``[joints.clearance]`` table has: materials, laws and wear (docs/model-format.md).
 
-The joint's first body carries the bearing (the hole, centred on the joint's first point),
-the second the journal (the pin, centred on its second point). Laws are chosen by name from
-their records (``model.laws``); each law's parameters are separate keys, and a key that the
-chosen law does not use is refused, so a model never carries a setting that silently does
-nothing. Validation reads only the records: nothing here imports the compiled kernels, except
-the derived numbers asked for at the point of use (``elastic_force``, ``hertz_patch``,
-``computation_problems``).
-``ContactKeys`` holds what every clearance joint shares (materials, laws, wear); the
-translational joint's table is ``model.slide_clearance``.
+Laws are chosen by name from their records (``model.laws``); each law's parameters are
+separate keys, and a key that the chosen law does not use is refused, so a model never carries
+a setting that silently does nothing. Validation reads only the records: nothing here imports
+the compiled kernels, except the derived numbers asked for at the point of use
+(``elastic_force``, ``hertz_patch``, ``computation_problems``). ``ClearanceTable`` holds
+what every joint type's clearance table shares (materials, laws, wear); each joint type
+subclasses it (``joints.<type>.schema``).
 """
 
 import math
@@ -19,10 +17,10 @@ from typing import TYPE_CHECKING, Annotated, ClassVar, NamedTuple
 from annotated_types import Ge, Gt, Le
 from pydantic import BeforeValidator, create_model, model_validator
 
-from ..units import Length, Pressure, Speed, Viscosity, WearCoefficient, to_si
+from ..units import Length, Pressure, Speed, Viscosity, WearCoefficient
 from .laws import DAMPING, EVERY, FRICTION, LUBRICATION, NORMAL, SHARED, WEAR, WEAR_DISTRIBUTION
-from .laws.normal import effective_modulus, effective_radius
-from .laws.record import CONFORMAL, SHAPE_NAMES, Contact, Family, Key, Law, family_keys
+from .laws.normal import effective_modulus
+from .laws.record import SHAPE_NAMES, Contact, Family, Key, Law, family_keys
 from .tables import Number, Table, one_of
 
 if TYPE_CHECKING:
@@ -77,7 +75,7 @@ class PackedLaw(NamedTuple):
     parameters: tuple[float, ...]
 
 
-def law_parameters(clearance: "ContactKeys") -> dict[str, PackedLaw]:
+def law_parameters(clearance: "ClearanceTable") -> dict[str, PackedLaw]:
     """Per family title ("normal", "friction", ...): the chosen law's code and packed parameters."""
     return {
         family.title: PackedLaw(law.code, law.pack(clearance.law_values(law)))
@@ -89,11 +87,12 @@ DERIVED_CHECK_SHARES = (0.01, 0.1, 0.4)  # of the clearance: penetrations the la
 DERIVED_CHECK_FORCE = 1000.0  # [N] a load the Hertz patch must handle
 
 
-def _law_name(family: Family) -> object:
+def law_name(family: Family) -> object:
+    """The type of a key naming one of ``family``'s laws."""
     return Annotated[str, one_of(family.by_name, family.title + " law")]
 
 
-class ContactKeys(_LawKeys):
+class ClearanceTable(_LawKeys):
     """The keys every clearance joint shares: materials, contact, friction and wear laws (SI).
 
     The keys of the laws (restitution, friction speeds, wear coefficients, ...) come from the
@@ -106,14 +105,14 @@ class ContactKeys(_LawKeys):
     width: PositiveLength
     youngs_modulus: Modulus | tuple[Modulus, Modulus]  # both, or [first body, second body]
     poisson_ratio: Poisson | tuple[Poisson, Poisson]
-    normal_law: _law_name(NORMAL) = NORMAL.default
-    damping: _law_name(DAMPING) = DAMPING.default
+    normal_law: law_name(NORMAL) = NORMAL.default
+    damping: law_name(DAMPING) = DAMPING.default
     min_impact_speed: PositiveSpeed = 1e-3
     contact_tolerance: PositiveLength = 1e-10
-    friction_law: _law_name(FRICTION) = FRICTION.default
+    friction_law: law_name(FRICTION) = FRICTION.default
     friction_coefficient: Annotated[Number, Ge(0)]
-    wear_law: _law_name(WEAR) = WEAR.default
-    lubrication: _law_name(LUBRICATION) = LUBRICATION.default
+    wear_law: law_name(WEAR) = WEAR.default
+    lubrication: law_name(LUBRICATION) = LUBRICATION.default
     wear_feedback: bool = True
 
     @model_validator(mode="before")
@@ -293,86 +292,6 @@ class ContactKeys(_LawKeys):
         args = (delta, self.stiffness, self.exponent, contact.contact_modulus,
                 contact.clearance, self.width)  # fmt: skip
         return elastic_force(code, *args), elastic_stiffness(code, *args)
-
-
-class Clearance(ContactKeys):
-    """A revolute joint with clearance: journal in bearing, contact, friction and wear (SI).
-
-    Material pairs are [bearing, journal].
-    """
-
-    FAMILIES: ClassVar[tuple[Family, ...]] = EVERY
-
-    bearing_radius: PositiveLength
-    journal_radius: PositiveLength
-    journal_wear_share: Annotated[Number, Ge(0), Le(1)] = 0.5
-    wear_distribution: _law_name(WEAR_DISTRIBUTION) = WEAR_DISTRIBUTION.default
-    sectors: Annotated[int, Ge(4), Le(100_000)] = 36
-
-    @model_validator(mode="before")
-    @classmethod
-    def _radial_clearance(cls, data: object) -> object:
-        """Read ``radial_clearance`` c as the bearing radius journal_radius + c [m]."""
-        if not isinstance(data, dict) or "radial_clearance" not in data:
-            return data
-        rest = {key: value for key, value in data.items() if key != "radial_clearance"}
-        if "journal_radius" not in data:
-            raise ValueError(
-                "radial_clearance needs journal_radius: the bearing radius is the journal's "
-                "plus the clearance"
-            )
-        clearance = to_si(data["radial_clearance"], "[length]", "radial_clearance")
-        journal = to_si(data["journal_radius"], "[length]", "journal_radius")
-        if not clearance > 0.0:
-            raise ValueError(f"radial_clearance: got {clearance:g} m; must be > 0")
-        return {**rest, "bearing_radius": journal + clearance}
-
-    @model_validator(mode="after")
-    def _consistent(self) -> "Clearance":
-        problems = [*self._unused_keys(), *self._law_problems(CONFORMAL)]
-        if self.journal_radius >= self.bearing_radius:
-            problems.append(
-                f"journal_radius {self.journal_radius * 1e3:.12g} mm must be smaller than "
-                f"bearing_radius {self.bearing_radius * 1e3:.12g} mm (the radial clearance is "
-                "their difference)"
-            )
-        elif self.contact_tolerance >= self.radial_clearance:
-            problems.append(
-                f"contact_tolerance {self.contact_tolerance:g} m must be much smaller than the "
-                f"radial clearance {self.radial_clearance:g} m (default 1e-10 m)"
-            )
-        if not problems:
-            problems = self._stiffness_problems()
-        if problems:
-            raise ValueError("; ".join(problems))
-        return self
-
-    @property
-    def radial_clearance(self) -> float:
-        """Radial clearance c = R_B - R_J [m]."""
-        return self.bearing_radius - self.journal_radius
-
-    @property
-    def relative_radius(self) -> float:
-        """R* = R_B R_J / (R_B - R_J) [m]."""
-        return effective_radius(self.bearing_radius, self.journal_radius)
-
-    @property
-    def contact(self) -> Contact:
-        """A journal in its bearing; an elastic layer lines the bearing."""
-        return Contact(
-            CONFORMAL, self.contact_modulus, self.relative_radius, self.radial_clearance,
-            self.width, (self.bearing_radius, self.moduli[0], self.poisson_ratios[0]),
-        )  # fmt: skip
-
-    def hertz_patch(self, force: float) -> tuple[float, float]:
-        """Half-width b [m] and peak pressure p_max [Pa] of the line contact under force [N].
-
-        Evaluates the kernels (imports them).
-        """
-        from ..kernels.laws.wear import hertz_line_contact
-
-        return hertz_line_contact(force, self.relative_radius, self.contact_modulus, self.width)
 
 
 def contact_problems(model: "Model") -> list[str]:

@@ -2,6 +2,7 @@
 
 from collections.abc import Sequence
 
+from ..joints import BY_NAME, KINDS
 from .errors import unknown
 from .sections import Body, Driver, Event, Ground, Joint, Load
 
@@ -64,7 +65,8 @@ def reference_problems(
     for i, joint in enumerate(joints):
         pair(f"joints[{i}]", joint, with_points=True)
     kinds = {joint.name: joint.type for joint in joints}
-    sliders = [j.name for j in joints if j.type == "translational" and j.clearance is None]
+    sliders = [j.name for j in joints if BY_NAME[j.type].slides and j.clearance is None]
+    sliding = " or ".join(kind.name for kind in KINDS if kind.slides)
     for i, driver in enumerate(drivers):
         path = f"drivers[{i}]"
         if driver.type == "angle":
@@ -78,10 +80,10 @@ def reference_problems(
             )
         elif driver.joint not in sliders:
             kind = kinds[driver.joint]
-            kind += " with clearance" if kind == "translational" else ""
+            kind += " with clearance" if BY_NAME[kind].slides else ""
             problems.append(
                 f"{path}.joint: {driver.joint!r} is {kind}; a distance driver needs an ideal "
-                f"translational joint ({', '.join(sliders) or 'there are none'})"
+                f"{sliding} joint ({', '.join(sliders) or 'there are none'})"
             )
     for i, force in enumerate(forces):
         path = f"forces[{i}]"

@@ -24,11 +24,9 @@ from .sections import (
     Ground,
     Joint,
     Load,
-    RevoluteJoint,
     Solver,
-    TranslationalJoint,
 )
-from .tables import Table
+from .tables import JointTable, Table
 
 # The model ---------------------------------------------------------------------------------
 
@@ -102,16 +100,16 @@ class Model(Table):
         """Return the moving body called `name` (KeyError if there is none)."""
         return _named(self.bodies, name)
 
-    def joint(self, name: str) -> RevoluteJoint | TranslationalJoint:
+    def joint(self, name: str) -> JointTable:
         """Return the joint called `name` (KeyError if there is none)."""
         return _named(self.joints, name)
 
     @property
-    def clearance_joints(self) -> tuple[RevoluteJoint | TranslationalJoint, ...]:
+    def clearance_joints(self) -> tuple[JointTable, ...]:
         """The joints with clearance, of every type, in file order."""
         return tuple(j for j in self.joints if j.clearance is not None)
 
-    def joints_of(self, joint_type: str) -> tuple[RevoluteJoint | TranslationalJoint, ...]:
+    def joints_of(self, joint_type: str) -> tuple[JointTable, ...]:
         """The joints of ``joint_type`` with clearance, in file order (their kernel's order)."""
         return tuple(j for j in self.joints if j.type == joint_type and j.clearance is not None)
 

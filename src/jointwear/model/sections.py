@@ -5,12 +5,13 @@ Each is a ``Table`` whose quantities are converted to SI floats as it is validat
 """
 
 import math
-from typing import Annotated, ClassVar, Literal
+from typing import Annotated, ClassVar, Literal, Union
 
 from annotated_types import Ge, Gt, Le
-from pydantic import AfterValidator, Field, Strict, ValidationInfo, field_validator, model_validator
+from pydantic import Field, Strict, ValidationInfo, field_validator, model_validator
 
-from ..kernels.codes import DriverKind, ForceKind, Formulation, JointKind, Method
+from ..joints import KINDS
+from ..kernels.codes import DriverKind, ForceKind, Formulation, Method
 from ..units import (
     Acceleration2,
     Angle,
@@ -27,9 +28,7 @@ from ..units import (
     Velocity2,
     to_si,
 )
-from .clearance import Clearance
 from .functions import AngleFunction, DistanceFunction, ForceValue, TorqueValue
-from .slide_clearance import SlideClearance
 from .tables import Name, Number, Table, one_of
 
 INTEGRATORS: dict[str, Method] = {"dopri5": Method.DOPRI5, "abm": Method.ABM}
@@ -62,46 +61,6 @@ class Body(Table):
     velocity: Velocity2 = (0.0, 0.0)
     angular_velocity: AngularSpeed = 0.0
     points: dict[Name, Vector2] = Field(default_factory=dict)
-
-
-class _Joint(Table):
-    name: Name
-    bodies: tuple[str, str]
-    points: tuple[str, str]
-
-
-class RevoluteJoint(_Joint):
-    """Pin joining `points[0]` of `bodies[0]` and `points[1]` of `bodies[1]`.
-
-    Ideal without `clearance`; with it, `bodies[0]` has the bearing and `bodies[1]` the
-    journal, and the joint acts through contact forces instead of constraints.
-    """
-
-    kind: ClassVar = JointKind.REVOLUTE
-    type: Literal["revolute"] = "revolute"
-    clearance: Clearance | None = None
-
-
-def _nonzero(axis: tuple[float, float]) -> tuple[float, float]:
-    """The axis as a unit vector (any non-zero length is a direction)."""
-    length = math.hypot(*axis)
-    if length == 0.0:
-        raise ValueError("the axis has zero length; give a direction, e.g. [1.0, 0.0]")
-    return (axis[0] / length, axis[1] / length)
-
-
-class TranslationalJoint(_Joint):
-    """Slider along `axis` (first body's frame, any non-zero length).
-
-    Ideal without `clearance`; with it, `bodies[0]` has the guide (its centreline through
-    `points[0]`) and `bodies[1]` the slider (centred on `points[1]`), which touch through
-    contact forces instead of constraints.
-    """
-
-    kind: ClassVar = JointKind.TRANSLATIONAL
-    type: Literal["translational"] = "translational"
-    axis: Annotated[tuple[Number, Number], AfterValidator(_nonzero)]
-    clearance: SlideClearance | None = None
 
 
 class AngleDriver(Table):
@@ -195,7 +154,7 @@ class RotationalSpringDamper(Table):
     free_angle: Angle = 0.0
 
 
-Joint = Annotated[RevoluteJoint | TranslationalJoint, Field(discriminator="type")]
+Joint = Annotated[Union[tuple(kind.schema for kind in KINDS)], Field(discriminator="type")]  # noqa: UP007
 Driver = Annotated[AngleDriver | DistanceDriver, Field(discriminator="type")]
 Load = Annotated[
     Gravity | PointForce | AppliedTorque | SpringDamper | RotationalSpringDamper,

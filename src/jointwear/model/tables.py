@@ -1,5 +1,6 @@
 """Building blocks of the model-file schema: the table base class and shared field types."""
 
+import math
 import re
 from typing import Annotated
 
@@ -50,3 +51,22 @@ class Table(BaseModel):
                     f"known keys are {', '.join(cls.model_fields)}{hint}"
                 )
         return data
+
+
+class JointTable(Table):
+    """A joint: its name, the two bodies it joins and a point of each.
+
+    Each joint type (``joints.KINDS``) subclasses it with its ``type``.
+    """
+
+    name: Name
+    bodies: tuple[str, str]
+    points: tuple[str, str]
+
+
+def unit_axis(axis: tuple[float, float]) -> tuple[float, float]:
+    """The axis as a unit vector (any non-zero length is a direction)."""
+    length = math.hypot(*axis)
+    if length == 0.0:
+        raise ValueError("the axis has zero length; give a direction, e.g. [1.0, 0.0]")
+    return (axis[0] / length, axis[1] / length)

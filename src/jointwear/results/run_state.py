@@ -19,17 +19,9 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..io import write_atomic
+from ..joints import KINDS
 
 FIELDS = ("contact_on", "impact_speed", "wear")  # each kind's arrays (``kernels.elements``)
-# Files saved before the joint types were keyed by name: their arrays' names.
-_OLD_NAMES = {
-    ("revolute", "contact_on"): "contact_on",
-    ("revolute", "impact_speed"): "impact_speed",
-    ("revolute", "wear"): "wear",
-    ("translational", "contact_on"): "slider_contact_on",
-    ("translational", "impact_speed"): "slider_impact_speed",
-    ("translational", "wear"): "slider_wear",
-}
 
 
 @dataclass(frozen=True)
@@ -94,10 +86,11 @@ def load_run_state(path: str | os.PathLike) -> RunState:
             if "." in key:
                 kind, name = key.split(".", 1)
                 contacts.setdefault(kind, {})[name] = data[key].copy()
-        if not contacts:
-            for (kind, name), old in _OLD_NAMES.items():
-                if old in data.files:
-                    contacts.setdefault(kind, {})[name] = data[old].copy()
+        if not contacts:  # saved before the joint types were keyed by name
+            for kind in KINDS:
+                for name, old in kind.older_state_names.items():
+                    if old in data.files:
+                        contacts.setdefault(kind.name, {})[name] = data[old].copy()
         for fields in contacts.values():
             if "contact_on" in fields:
                 fields["contact_on"] = fields["contact_on"].astype(np.int64)

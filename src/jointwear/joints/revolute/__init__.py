@@ -15,7 +15,15 @@ import numpy as np
 from numpy.typing import NDArray
 from typing_extensions import override
 
-from ..kind import PENETRATION_SHARES, ClearanceKind, common_figures, deepest, stiffness_rows
+from ..kind import (
+    PENETRATION_SHARES,
+    STATE_FIELDS,
+    ClearanceKind,
+    common_figures,
+    deepest,
+    stiffness_rows,
+)
+from .schema import RevoluteJoint
 
 HERTZ_REFERENCE_FORCES = (100.0, 1000.0)  # loads at which `check` shows the Hertz patch [N]
 SURFACES = ("bearing", "journal")  # the first index of the kernel's wear array
@@ -50,6 +58,7 @@ class RevoluteKind(ClearanceKind):
     """A journal in its bearing."""
 
     name = "revolute"
+    schema = RevoluteJoint
     kernel = "journal"
     wear_position = "angle_deg"
     impact_columns = ("bearing_angle_deg", "journal_angle_deg")
@@ -63,6 +72,7 @@ class RevoluteKind(ClearanceKind):
         "eccentricity_ratio": "eccentricity ratio (film model)",
     })  # fmt: skip
     ideal_rows = ("x", "y")
+    older_state_names = MappingProxyType({field: field for field in STATE_FIELDS})
     pins_points = True
     figures = (  # the paper's Figs. 7-10
         ("fig7_dynamics", "plot_dynamics"),
@@ -222,7 +232,7 @@ class RevoluteKind(ClearanceKind):
 def _outside_ranges(jc: object, c: object, row: NDArray[np.float64], duration: float) -> dict:
     """Per checked assumption of the joint's laws: its limit, the largest value, the time beyond.
 
-    Only the ranges of the laws this joint uses (their records: ``Clearance.law_ranges``).
+    Only the ranges of the laws this joint uses (their records: ``ClearanceTable.law_ranges``).
     """
     from ...model.laws.record import ECCENTRICITY, HERTZ_PATCH, PENETRATION
 

@@ -20,9 +20,9 @@ from ...figures.files import save_pngs
 from ...figures.legends import LEGEND_ROOM, legend_beside
 from ...figures.plan import crank_driver, kind_drawings
 from ...figures.scaling import length_unit
-from ...model.sections import RevoluteJoint
 from ...results import Results
 from . import KIND
+from .schema import RevoluteJoint
 
 PROFILE_SHARE = 0.15  # Fig. 10: the largest wear depth is drawn as this share of the radius
 STILL_ANGLE = 1e-6  # [rad] a body whose angle spans less does not rotate (a slider)

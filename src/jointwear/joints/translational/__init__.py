@@ -11,12 +11,21 @@ positive along the axis). Impact rows: the contact (a corner or a guide edge,
 from __future__ import annotations
 
 import math
+from types import MappingProxyType
 
 import numpy as np
 from numpy.typing import NDArray
 from typing_extensions import override
 
-from ..kind import PENETRATION_SHARES, ClearanceKind, common_figures, deepest, stiffness_rows
+from ..kind import (
+    PENETRATION_SHARES,
+    STATE_FIELDS,
+    ClearanceKind,
+    common_figures,
+    deepest,
+    stiffness_rows,
+)
+from .schema import TranslationalJoint
 
 SURFACES = ("guide_top", "guide_bottom", "slider_top", "slider_bottom")  # the kernel's order
 UNITS = {
@@ -46,6 +55,7 @@ class TranslationalKind(ClearanceKind):
     """A slider in its guide."""
 
     name = "translational"
+    schema = TranslationalJoint
     kernel = "slider"
     wear_position = "position_m"
     impact_columns = ("contact", "guide_position_m")
@@ -54,7 +64,9 @@ class TranslationalKind(ClearanceKind):
     citations = ("flores2008translational",)  # the model of the contacts
     surfaces = SURFACES
     ideal_rows = ("angle", "line")
+    older_state_names = MappingProxyType({field: f"slider_{field}" for field in STATE_FIELDS})
     pins_points = False
+    slides = True
     figures = (
         ("slider_motion", "plot_slider_motion"),
         ("slider_corner_forces", "plot_corner_forces"),

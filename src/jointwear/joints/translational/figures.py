@@ -22,10 +22,9 @@ from ...figures.files import save_pngs
 from ...figures.legends import LEGEND_ROOM, legend_beside
 from ...figures.plan import kind_drawings
 from ...figures.scaling import length_unit
-from ...model.sections import TranslationalJoint
-from ...model.slide_clearance import SlideClearance
 from ...results import Results
 from . import KIND
+from .schema import TranslationalClearance, TranslationalJoint
 
 MM = 1e3  # [mm/m]
 MRAD = 1e3  # [mrad/rad]
@@ -45,7 +44,7 @@ def _joints(results: Results) -> tuple[TranslationalJoint, ...]:
     return joints
 
 
-def tilt_limit(clearance: SlideClearance) -> float:
+def tilt_limit(clearance: TranslationalClearance) -> float:
     """Tilt [rad] at which two opposite corners touch both guide surfaces, slider centred.
 
     Rigid slider with sharp corners, no wear: a sin(t) + b cos(t) = b + c with a, b the

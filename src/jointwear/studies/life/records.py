@@ -21,8 +21,8 @@ from numpy.typing import NDArray
 
 from ..._version import __version__
 from ...joints.revolute import SURFACES
+from ...joints.revolute.schema import RevoluteJoint
 from ...model import Model
-from ...model.sections import RevoluteJoint
 from ...results import Results
 from ...results.clearance import wear_table
 

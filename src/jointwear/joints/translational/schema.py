@@ -1,32 +1,33 @@
-"""Schema of a translational joint's ``[joints.clearance]`` table (docs/model-format.md).
+"""The translational joint's table in a model file, ideal or with clearance (docs/model-format.md).
 
 The joint's first body carries the guide (its centreline through the joint's first point,
 along the joint's ``axis``), the second the slider (a rectangle centred on the joint's second
 point, its length along the axis). The slider's four corners touch the guide's two surfaces;
 a finite guide's ends touch the slider's faces (``kernels.elements.slider``).
 
-Contact stiffness: each corner is a line across the width, rounded to ``corner_radius``, on a
-flat surface (the laws' ``CORNER_ON_FLAT`` contact, with the corner's radius as R*). It takes
-the same power law as the revolute joint, F = K delta^1.5 with K = 4/3 E* sqrt(r): the
-sphere-on-plane Hertz constant with the corner's radius. That is the revolute joint's
+Contact stiffness: the corners and edges are sharp in the geometry; ``corner_radius`` only
+sets the stiffness of every contact (the laws' ``CORNER_ON_FLAT`` contact, with the corner's
+radius as R*): the same power law as the revolute joint, F = K delta^1.5 with
+K = 4/3 E* sqrt(r), the sphere-on-plane Hertz constant, which is the revolute joint's
 internal-cylinder formula with the bearing's radius taken to infinity, so both joints follow
-one convention. A true line contact's stiffness also depends (weakly,
-logarithmically) on the bodies' sizes, which a corner does not define; give
-``contact_stiffness`` to use a measured or computed one instead.
+one convention. A true line contact's stiffness also depends (weakly, logarithmically) on
+the bodies' sizes, which a corner does not define; give ``contact_stiffness`` to use a
+measured or computed one instead.
 """
 
-from typing import Annotated
+from typing import Annotated, ClassVar, Literal
 
 from annotated_types import Ge, Le
-from pydantic import model_validator
+from pydantic import AfterValidator, model_validator
 
-from .clearance import ContactKeys, PositiveLength
-from .laws.normal import HERTZ_EXPONENT
-from .laws.record import CORNER_ON_FLAT, Contact
-from .tables import Number
+from ...kernels.codes import JointKind
+from ...model.clearance import ClearanceTable, PositiveLength
+from ...model.laws.normal import HERTZ_EXPONENT
+from ...model.laws.record import CORNER_ON_FLAT, Contact
+from ...model.tables import JointTable, Number, unit_axis
 
 
-class SlideClearance(ContactKeys):
+class TranslationalClearance(ClearanceTable):
     """A translational joint with clearance: slider in guide, contact, friction and wear (SI).
 
     Material pairs are [guide, slider].
@@ -42,7 +43,7 @@ class SlideClearance(ContactKeys):
     segments: Annotated[int, Ge(1), Le(100_000)] = 20
 
     @model_validator(mode="after")
-    def _consistent(self) -> "SlideClearance":
+    def _consistent(self) -> "TranslationalClearance":
         problems = [
             *self._unused_keys(),
             *self._law_problems(CORNER_ON_FLAT),
@@ -102,3 +103,17 @@ class SlideClearance(ContactKeys):
             CORNER_ON_FLAT, self.contact_modulus, self.corner_radius, self.clearance_gap,
             self.width,
         )  # fmt: skip
+
+
+class TranslationalJoint(JointTable):
+    """Slider along `axis` (first body's frame, any non-zero length).
+
+    Ideal without `clearance`; with it, `bodies[0]` has the guide (its centreline through
+    `points[0]`) and `bodies[1]` the slider (centred on `points[1]`), which touch through
+    contact forces instead of constraints.
+    """
+
+    kind: ClassVar = JointKind.TRANSLATIONAL
+    type: Literal["translational"] = "translational"
+    axis: Annotated[tuple[Number, Number], AfterValidator(unit_axis)]
+    clearance: TranslationalClearance | None = None
