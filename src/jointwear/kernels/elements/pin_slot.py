@@ -77,7 +77,7 @@ from numba import njit
 
 from ..kinematics import point_position, rotate
 from ..laws.friction import slip_speed, tangential_force
-from ..laws.normal import damped, effective_radius, elastic_force
+from ..laws.normal import damped, elastic_force
 from ..laws.normal import elastic_energy as law_energy
 from ..laws.segments import add_wear, depth_along
 from ..laws.wear import depth_at, hertz_line_contact, wear_coefficient
@@ -415,7 +415,7 @@ def _track_ranges(law, p, c, totals, h):
     if c[C_FN] <= 0.0:
         return
     on_side = c[C_SURFACE] <= SIDE_MINUS_V
-    r_star = p[P_RP] if on_side else effective_radius(p[P_RS], p[P_RP])
+    r_star = p[P_RP] if on_side else p[P_RS] * p[P_RP] / p[P_C]  # R_s R_p / c in an end
     b, _ = hertz_line_contact(c[C_FN], r_star, p[P_ESTAR], p[P_WIDTH])
     ranges = (
         (T_PATCH_TIME, T_PATCH_MAX, b / p[P_RP], p[P_PATCH_LIMIT]),
