@@ -62,6 +62,10 @@ class TranslationalKind(ClearanceKind):
     figures_module = f"{__name__}.figures"
     animation_module = f"{__name__}.animation"
     citations = ("flores2008translational",)  # the model of the contacts
+    range_words = MappingProxyType({
+        "penetration_over_gap": "penetration / gap",
+        "hertz_half_width_over_corner_radius": "Hertz half-width / corner radius",
+    })  # fmt: skip
     surfaces = SURFACES
     ideal_rows = ("angle", "line")
     older_state_names = MappingProxyType({field: f"slider_{field}" for field in STATE_FIELDS})
@@ -82,6 +86,7 @@ class TranslationalKind(ClearanceKind):
         self, joint: object, model: object, bodies: tuple[int, int], angle0: float
     ) -> tuple[list[int], NDArray[np.float64]]:
         from ...model.clearance import law_parameters
+        from ...model.laws.record import HERTZ_PATCH, PENETRATION
 
         sc = self.module
         clearance = joint.clearance
@@ -120,6 +125,10 @@ class TranslationalKind(ClearanceKind):
         param[sc.P_MIN_SPEED] = clearance.min_impact_speed
         param[sc.P_TOL] = clearance.contact_tolerance
         param[sc.P_ANGLE0] = angle0
+        ranges = clearance.law_ranges()
+        param[sc.P_RSTAR] = clearance.corner_radius or 0.0  # not given: the patch unchecked
+        param[sc.P_DEPTH_LIMIT] = ranges[PENETRATION]
+        param[sc.P_PATCH_LIMIT] = ranges.get(HERTZ_PATCH, 0.0) if clearance.corner_radius else 0.0
         return ints, param
 
     def start_problems(self, joint: object, model: object, place: object) -> list[str]:
@@ -182,6 +191,39 @@ class TranslationalKind(ClearanceKind):
             rows.append(("stiffness dF/d(delta) there", stiffness, "N/m"))
         return [*rows, ("segments per surface", c.segments, "")]
 
+    @property
+    @override
+    def peaks(self) -> tuple[int, ...]:
+        return (*super().peaks, self.module.T_DEPTH_MAX, self.module.T_PATCH_MAX)
+
+    def _outside_ranges(self, c: object, row: NDArray[np.float64], duration: float) -> dict:
+        """Per range of the joint's laws: its limit, the largest value, the time beyond.
+
+        The penetration against the gap; the Hertz half-width of a corner against its radius
+        where ``corner_radius`` is given.
+        """
+        from ...model.laws.record import HERTZ_PATCH, PENETRATION
+
+        ks = self.module
+        checks = {PENETRATION: ("penetration_over_gap", ks.T_DEPTH_TIME, ks.T_DEPTH_MAX)}
+        if c.corner_radius is not None:
+            checks[HERTZ_PATCH] = (
+                "hertz_half_width_over_corner_radius",
+                ks.T_PATCH_TIME,
+                ks.T_PATCH_MAX,
+            )
+        ranges = c.law_ranges()
+        return {
+            name: {
+                "limit": float(ranges[law_range]),
+                "largest": float(row[largest]),
+                "time_beyond_s": float(row[time]),
+                "time_fraction_beyond": float(row[time] / duration) if duration else 0.0,
+            }
+            for law_range, (name, time, largest) in checks.items()
+            if law_range in ranges
+        }
+
     @override
     def wear_rows(self, joint: object, wear: NDArray[np.float64]) -> list[tuple]:
         n = joint.clearance.segments
@@ -208,7 +250,12 @@ class TranslationalKind(ClearanceKind):
     ) -> dict[str, object]:
         c = joint.clearance
         entry = common_figures(self, totals, duration)
-        entry = {"type": entry.pop("type"), "gap_m": c.clearance_gap, **entry}
+        entry = {
+            "type": entry.pop("type"),
+            "gap_m": c.clearance_gap,
+            **entry,
+            "outside_law_ranges": self._outside_ranges(c, totals, duration),
+        }
         for surface, length in surfaces(joint).items():
             depth, peak = deepest(wear[SURFACES.index(surface), : c.segments])
             entry[f"max_wear_depth_{surface}_m"] = depth

@@ -47,7 +47,7 @@ from ..laws.friction import slip_speed, tangential_force
 from ..laws.normal import damped, elastic_force
 from ..laws.normal import elastic_energy as law_energy
 from ..laws.segments import add_wear, depth_along
-from ..laws.wear import wear_coefficient
+from ..laws.wear import hertz_line_contact, wear_coefficient
 from .point_loads import apply_force_at
 
 # Columns of SliderTable.ints.
@@ -89,7 +89,10 @@ P_ESTAR = 22  # contact modulus E* [Pa]
 P_MIN_SPEED = 23  # floor of the impact speed [m/s]
 P_TOL = 24  # contact tolerance [m]
 P_ANGLE0 = 25  # slider angle minus guide angle when level [rad]
-N_PARAMS = 26
+P_RSTAR = 26  # corner radius, the contacts' R* [m]; 0: not given (the patch is not checked)
+P_DEPTH_LIMIT = 27  # the elastic law's range: penetration / c [-] (its record's)
+P_PATCH_LIMIT = 28  # the Hertz patch's range: b / R* [-]; 0: not checked
+N_PARAMS = 29
 
 # Contact slots of one joint: the corners, then the guide's edges; front is +axis, top +normal.
 CONTACT_NAMES = (
@@ -130,7 +133,11 @@ T_DAMPING_ENERGY = 4  # energy dissipated by damping [J]
 T_FRICTION_ENERGY = 5  # energy dissipated by friction [J]
 T_WORN_VOLUME = 6  # volume removed from all surfaces [m^3]
 T_SLIDING = 7  # sliding distance of the contacts while sliding [m]
-N_TOTALS = 8
+T_DEPTH_TIME = 8  # time some contact's penetration exceeded P_DEPTH_LIMIT c [s]
+T_DEPTH_MAX = 9  # largest penetration / c [-]
+T_PATCH_TIME = 10  # time some contact's Hertz half-width exceeded P_PATCH_LIMIT R* [s]
+T_PATCH_MAX = 11  # largest Hertz half-width / R* [-]
+N_TOTALS = 12
 
 # Columns of an onset's entry in the impact log.
 IMPACT_SPEED = 0  # penetration rate at onset [m/s]
@@ -440,6 +447,7 @@ def accumulate(table, state, scratch, log, t_old, t_new, q_mid, qd_mid, snap_tim
             totals[T_SLIDING] += speeds[i] * h
         if touching:
             totals[T_CONTACT_TIME] += h
+            _track_ranges(table.params[k], scratch.contact[k], totals, h)
         t_from = t_old
         s = first
         while s < snap_times.shape[0] and snap_times[s] <= t_new:  # split the wear there
@@ -449,6 +457,32 @@ def accumulate(table, state, scratch, log, t_old, t_new, q_mid, qd_mid, snap_tim
             t_from = t_snap
             s += 1
         totals[T_WORN_VOLUME] += _wear_all(table, state, scratch, k, speeds, t_new - t_from)
+
+
+@njit(cache=True, no_cpython_wrapper=True)
+def _track_ranges(p, contacts, totals, h):
+    """The step's h [s] beyond the laws' ranges, and the largest ratios, into totals.
+
+    Over the contacts with a positive normal force: penetration / c, and the Hertz half-width
+    of a corner of radius R* pressed on a flat (a line contact) / R*, each counted once per
+    step when some contact is beyond its limit.
+    """
+    depth = 0.0
+    patch = 0.0
+    for i in range(contacts.shape[0]):
+        c = contacts[i]
+        if c[C_FN] <= 0.0:
+            continue
+        depth = max(depth, c[C_DELTA] / (p[P_H] - p[P_B]))
+        if p[P_RSTAR] > 0.0:
+            b, _ = hertz_line_contact(c[C_FN], p[P_RSTAR], p[P_ESTAR], p[P_WIDTH])
+            patch = max(patch, b / p[P_RSTAR])
+    totals[T_DEPTH_MAX] = max(totals[T_DEPTH_MAX], depth)
+    totals[T_PATCH_MAX] = max(totals[T_PATCH_MAX], patch)
+    if depth > p[P_DEPTH_LIMIT]:
+        totals[T_DEPTH_TIME] += h
+    if p[P_PATCH_LIMIT] > 0.0 and patch > p[P_PATCH_LIMIT]:
+        totals[T_PATCH_TIME] += h
 
 
 @njit(cache=True, no_cpython_wrapper=True)
