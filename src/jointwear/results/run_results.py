@@ -16,7 +16,9 @@ import difflib
 import html
 import json
 import os
+from collections.abc import Callable
 from dataclasses import dataclass, field
+from importlib.metadata import entry_points
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -28,6 +30,8 @@ from ..engine.finite import json_safe
 from ..io import make_folder, remove, write_atomic, write_text
 from ..model import Model, parse_model
 from .run_state import RunState
+
+PLOTTING = "jointwear.plotting"  # the entry points of the plotting functions (pyproject.toml)
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -147,9 +151,7 @@ class Results:
             raise ValueError("plot: name at least one time-series column, e.g. plot('time')")
         for name in (*columns, x):
             _check_column(name, list(self.timeseries.columns))
-        from ..figures.columns import plot_columns  # matplotlib only when plotting
-
-        return plot_columns(self, tuple(columns), x=x, ax=ax)
+        return _plotter("columns")(self, tuple(columns), x=x, ax=ax)
 
     def export(self, path: str | os.PathLike) -> Path:
         """Write every table to one file, in the format its suffix names.
@@ -291,3 +293,14 @@ def load_results(folder: str | os.PathLike) -> Results:
         summary=summary,
         **tables,
     )
+
+
+def _plotter(name: str) -> Callable[..., Figure]:
+    """The plotting function registered as ``name`` (``PLOTTING``; matplotlib when loaded)."""
+    points = entry_points(group=PLOTTING, name=name)
+    if not points:
+        raise RuntimeError(
+            f"no plotting function '{name}' is registered ({PLOTTING} entry points): jointwear's "
+            "installation is out of date; install it again (make install, or pip install -e .)"
+        )
+    return next(iter(points)).load()

@@ -28,7 +28,6 @@ PROFILE_SHARE = 0.15  # Fig. 10: the largest wear depth is drawn as this share o
 STILL_ANGLE = 1e-6  # [rad] a body whose angle spans less does not rotate (a slider)
 CLEARANCE_COLOR = "tab:red"
 IDEAL_COLOR = "0.15"
-SURFACES = ("journal", "bearing")  # the paper's Figs. 8-10 show the journal first
 MM = 1e3  # [mm/m]
 PEAK_ROOM = 1.1  # Fig. 8's depth axes reach this share above their automatic top
 
@@ -241,7 +240,7 @@ def plot_wear_sectors(results: Results) -> Figure:
     fig = Figure(figsize=(11.0 + LEGEND_ROOM, 3.8 * len(joints) + 0.5), layout="constrained")
     axes = fig.subplots(len(joints), 2, squeeze=False)
     for row, joint in zip(axes, joints, strict=True):
-        for ax, surface in zip(row, SURFACES, strict=True):
+        for ax, surface in zip(row, KIND.surfaces, strict=True):
             for (time, table), color in zip(profiles, colors, strict=True):
                 angle, depth = _profile(table, joint.name, surface)
                 label = _turns_label(results, time)
@@ -270,7 +269,7 @@ def plot_wear_polar(results: Results) -> Figure:
     fig = Figure(figsize=(10.0, 5.0 * len(joints) + 0.5), layout="constrained")
     t_end = float(results.timeseries["time"].iloc[-1])
     for k, joint in enumerate(joints):
-        for s, surface in enumerate(SURFACES):
+        for s, surface in enumerate(KIND.surfaces):
             ax = fig.add_subplot(len(joints), 2, 2 * k + s + 1, projection="polar")
             angle, depth = _profile(results.wear, joint.name, surface)
             theta = np.radians(np.append(angle, angle[0]))
@@ -324,7 +323,7 @@ def plot_wear_profile(results: Results) -> Figure:
     for row, joint in zip(axes, joints, strict=True):
         scale = wear_exaggeration(results, joint.name)
         factor = _factor_text(scale)
-        for ax, surface in zip(row, SURFACES, strict=True):
+        for ax, surface in zip(row, KIND.surfaces, strict=True):
             centres, depth = _profile(results.wear, joint.name, surface)
             angle = np.unique(np.concatenate([np.linspace(0.0, 360.0, 721), centres]))
             worn_depth = np.interp(angle, centres, depth, period=360.0)
