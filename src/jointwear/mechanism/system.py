@@ -214,6 +214,152 @@ def _table(rows: list, shape: tuple[int, ...], dtype: type) -> NDArray:
     return np.array(rows, dtype=dtype).reshape((len(rows), *shape))
 
 
+class _Poses:
+    """The bodies' kernel indices and initial poses, and points in body and global frames."""
+
+    def __init__(self, model: Model) -> None:
+        self.index = {b.name: i for i, b in enumerate(model.bodies)} | {"ground": GROUND}
+        self.pose = {b.name: (b.position[0], b.position[1], b.angle) for b in model.bodies}
+        self.pose["ground"] = (0.0, 0.0, 0.0)
+        self.local = model.point
+
+    def angle(self, body: str) -> float:
+        """Initial angle of ``body`` [rad]."""
+        return self.pose[body][2]
+
+    def global_point(self, body: str, point: str) -> NDArray[np.float64]:
+        """Initial global position of ``point`` of ``body`` [m]."""
+        x, y, phi = self.pose[body]
+        c, s = np.cos(phi), np.sin(phi)
+        px, py = self.local(body, point)
+        if body == "ground":
+            return np.array([px, py])
+        return np.array([x + c * px - s * py, y + s * px + c * py])
+
+
+def _joint_tables(
+    model: Model, poses: _Poses, ideal: bool
+) -> tuple[dict[str, list], dict[str, int], dict[str, list]]:
+    """The ideal joints' table, each ideal joint's index in it, each kind's element rows.
+
+    Constraint rows from 0; with ``ideal`` every joint is ideal, and no kind has rows.
+    """
+    joints = {"kind": [], "body": [], "point": [], "axis": [], "angle0": [], "row": [], "rows": []}
+    kernel_index: dict[str, int] = {}
+    elements: dict[str, list] = {kind.name: [] for kind in KINDS}
+    row = 0
+    for joint in model.joints:
+        b1, b2 = joint.bodies
+        angle0 = poses.angle(b2) - poses.angle(b1)
+        if joint.clearance is not None and not ideal:
+            kind = BY_NAME[joint.type]
+            bodies = (poses.index[b1], poses.index[b2])
+            elements[kind.name].append(kind.row(joint, model, bodies, angle0))
+            continue
+        axis = np.array(getattr(joint, "axis", (1.0, 0.0)), dtype=float)
+        kernel_index[joint.name] = len(joints["kind"])
+        joints["kind"].append(int(joint.kind))
+        joints["body"].append([poses.index[b1], poses.index[b2]])
+        joints["point"].append([poses.local(b1, joint.points[0]), poses.local(b2, joint.points[1])])
+        joints["axis"].append(axis / np.linalg.norm(axis))
+        joints["angle0"].append(angle0)
+        joints["row"].append(row)
+        joints["rows"].append(JOINT_ROWS[joint.kind])
+        row += JOINT_ROWS[joint.kind]
+    return joints, kernel_index, elements
+
+
+def _driver_table(
+    model: Model, poses: _Poses, functions: _Functions, kernel_index: dict[str, int], row: int
+) -> dict[str, list]:
+    """The drivers' table, their constraint rows from ``row`` on."""
+    drivers = {"kind": [], "body": [], "joint": [], "function": [], "row": []}
+    for driver in model.drivers:
+        if driver.type == "angle":
+            i, j = driver.relative_to, driver.body
+            initial = poses.angle(j) - poses.angle(i)
+            drivers["kind"].append(int(DriverKind.ANGLE))
+            drivers["body"].append([poses.index[i], poses.index[j]])
+            drivers["joint"].append(-1)
+        else:
+            joint = model.joint(driver.joint)
+            b1, b2 = joint.bodies
+            axis = np.array(joint.axis, dtype=float)
+            c, s = np.cos(poses.angle(b1)), np.sin(poses.angle(b1))
+            axis_global = np.array([c * axis[0] - s * axis[1], s * axis[0] + c * axis[1]])
+            slide = poses.global_point(b2, joint.points[1]) - poses.global_point(
+                b1, joint.points[0]
+            )
+            initial = float(slide @ axis_global / np.linalg.norm(axis))
+            drivers["kind"].append(int(DriverKind.DISTANCE))
+            drivers["body"].append([GROUND, GROUND])
+            drivers["joint"].append(kernel_index[driver.joint])
+        drivers["function"].append(functions.add_spec(driver.function, initial))
+        drivers["row"].append(row)
+        row += 1
+    return drivers
+
+
+def _load_table(
+    model: Model, poses: _Poses, functions: _Functions
+) -> tuple[dict[str, list], NDArray[np.float64]]:
+    """The applied loads' table, and gravity [m/s^2]."""
+    gravity = np.zeros(2)
+    loads = {"kind": [], "body": [], "point": [], "function": [], "param": []}
+    for force in model.forces:
+        if force.type == "gravity":
+            gravity += np.asarray(force.acceleration, dtype=float)
+            continue
+        body_pair, point_pair = [GROUND, GROUND], [(0.0, 0.0), (0.0, 0.0)]
+        funcs, param = [-1, -1], [0.0, 0.0, 0.0]
+        if force.type == "point_force":
+            body_pair[0] = poses.index[force.body]
+            point_pair[0] = poses.local(force.body, force.point)
+            funcs = [functions.add_spec(force.force[0]), functions.add_spec(force.force[1])]
+        elif force.type == "torque":
+            body_pair[0] = poses.index[force.body]
+            funcs[0] = functions.add_spec(force.torque)
+        elif force.type == "spring_damper":
+            body_pair = [poses.index[b] for b in force.bodies]
+            point_pair = [
+                poses.local(b, p) for b, p in zip(force.bodies, force.points, strict=True)
+            ]
+            param = [force.stiffness, force.damping, force.free_length]
+        else:
+            body_pair = [poses.index[b] for b in force.bodies]
+            param = [force.stiffness, force.damping, force.free_angle]
+        loads["kind"].append(int(force.kind))
+        loads["body"].append(body_pair)
+        loads["point"].append(point_pair)
+        loads["function"].append(funcs)
+        loads["param"].append(param)
+    return loads, gravity
+
+
+def _row_bodies(joints: dict[str, list], drivers: dict[str, list], rows: int) -> NDArray[np.int64]:
+    """The two bodies of every constraint row (the Jacobian's pattern)."""
+    row_bodies = np.zeros((rows, 2), dtype=np.int64)
+    for first, count, pair in zip(joints["row"], joints["rows"], joints["body"], strict=True):
+        row_bodies[first : first + count] = pair
+    for r, kind, pair, jt in zip(
+        drivers["row"], drivers["kind"], drivers["body"], drivers["joint"], strict=True
+    ):
+        row_bodies[r] = pair if kind == DriverKind.ANGLE else joints["body"][jt]
+    return row_bodies
+
+
+def _user_events(model: Model, poses: _Poses) -> UserEvents:
+    coordinate = {"x": 0, "y": 1, "phi": 2}
+    return UserEvents(
+        body=_table([poses.index[e.body] for e in model.events], (), np.int64),
+        coordinate=_table([coordinate[e.coordinate] for e in model.events], (), np.int64),
+        value=_table([e.value for e in model.events], (), np.float64),
+        direction=_table(
+            [int(EventDirection[e.direction.upper()]) for e in model.events], (), np.int64
+        ),
+    )
+
+
 def build_system(model: Model, *, ideal: bool = False) -> System:
     """Build the kernel arrays of ``model`` (validated, SI).
 
@@ -224,104 +370,13 @@ def build_system(model: Model, *, ideal: bool = False) -> System:
     problems = [] if ideal else contact_problems(model)
     if problems:
         raise ModelError(problems)
-    index = {b.name: i for i, b in enumerate(model.bodies)}
-    index["ground"] = GROUND
-    pose = {b.name: (b.position[0], b.position[1], b.angle) for b in model.bodies}
-    pose["ground"] = (0.0, 0.0, 0.0)
-    local = model.point
-
-    def global_point(body: str, point: str) -> NDArray[np.float64]:
-        x, y, phi = pose[body]
-        c, s = np.cos(phi), np.sin(phi)
-        px, py = local(body, point)
-        if body == "ground":
-            return np.array([px, py])
-        return np.array([x + c * px - s * py, y + s * px + c * py])
-
+    poses = _Poses(model)
     functions = _Functions()
-    joints = {"kind": [], "body": [], "point": [], "axis": [], "angle0": [], "row": [], "rows": []}
-    kernel_index: dict[str, int] = {}  # ideal joints: row of the kernels' joint table
-    rows: dict[str, list] = {kind.name: [] for kind in KINDS}
-    row = 0
-    for joint in model.joints:
-        b1, b2 = joint.bodies
-        points = [local(b1, joint.points[0]), local(b2, joint.points[1])]
-        axis = np.array(getattr(joint, "axis", (1.0, 0.0)), dtype=float)
-        axis /= np.linalg.norm(axis)
-        angle0 = pose[b2][2] - pose[b1][2]
-        if joint.clearance is not None and not ideal:
-            kind = BY_NAME[joint.type]
-            rows[kind.name].append(kind.row(joint, model, (index[b1], index[b2]), angle0))
-            continue
-        kernel_index[joint.name] = len(joints["kind"])
-        joints["kind"].append(int(joint.kind))
-        joints["body"].append([index[b1], index[b2]])
-        joints["point"].append(points)
-        joints["axis"].append(axis)
-        joints["angle0"].append(angle0)
-        joints["row"].append(row)
-        joints["rows"].append(JOINT_ROWS[joint.kind])
-        row += JOINT_ROWS[joint.kind]
-
-    drivers = {"kind": [], "body": [], "joint": [], "function": [], "row": []}
-    for driver in model.drivers:
-        if driver.type == "angle":
-            i, j = driver.relative_to, driver.body
-            initial = pose[j][2] - pose[i][2]
-            drivers["kind"].append(int(DriverKind.ANGLE))
-            drivers["body"].append([index[i], index[j]])
-            drivers["joint"].append(-1)
-        else:
-            joint = model.joint(driver.joint)
-            b1, b2 = joint.bodies
-            axis = np.array(joint.axis, dtype=float)
-            c, s = np.cos(pose[b1][2]), np.sin(pose[b1][2])
-            axis_global = np.array([c * axis[0] - s * axis[1], s * axis[0] + c * axis[1]])
-            slide = global_point(b2, joint.points[1]) - global_point(b1, joint.points[0])
-            initial = float(slide @ axis_global / np.linalg.norm(axis))
-            drivers["kind"].append(int(DriverKind.DISTANCE))
-            drivers["body"].append([GROUND, GROUND])
-            drivers["joint"].append(kernel_index[driver.joint])
-        drivers["function"].append(functions.add_spec(driver.function, initial))
-        drivers["row"].append(row)
-        row += 1
-
-    gravity = np.zeros(2)
-    loads = {"kind": [], "body": [], "point": [], "function": [], "param": []}
-    for force in model.forces:
-        if force.type == "gravity":
-            gravity += np.asarray(force.acceleration, dtype=float)
-            continue
-        body_pair, point_pair = [GROUND, GROUND], [(0.0, 0.0), (0.0, 0.0)]
-        funcs, param = [-1, -1], [0.0, 0.0, 0.0]
-        if force.type == "point_force":
-            body_pair[0] = index[force.body]
-            point_pair[0] = local(force.body, force.point)
-            funcs = [functions.add_spec(force.force[0]), functions.add_spec(force.force[1])]
-        elif force.type == "torque":
-            body_pair[0] = index[force.body]
-            funcs[0] = functions.add_spec(force.torque)
-        elif force.type == "spring_damper":
-            body_pair = [index[b] for b in force.bodies]
-            point_pair = [local(b, p) for b, p in zip(force.bodies, force.points, strict=True)]
-            param = [force.stiffness, force.damping, force.free_length]
-        else:
-            body_pair = [index[b] for b in force.bodies]
-            param = [force.stiffness, force.damping, force.free_angle]
-        loads["kind"].append(int(force.kind))
-        loads["body"].append(body_pair)
-        loads["point"].append(point_pair)
-        loads["function"].append(funcs)
-        loads["param"].append(param)
-
-    coordinate = {"x": 0, "y": 1, "phi": 2}
-    row_bodies = np.zeros((row, 2), dtype=np.int64)
-    for first, count, pair in zip(joints["row"], joints["rows"], joints["body"], strict=True):
-        row_bodies[first : first + count] = pair
-    for r, kind, pair, jt in zip(
-        drivers["row"], drivers["kind"], drivers["body"], drivers["joint"], strict=True
-    ):
-        row_bodies[r] = pair if kind == DriverKind.ANGLE else joints["body"][jt]
+    joints, kernel_index, elements = _joint_tables(model, poses, ideal)
+    first_driver_row = sum(joints["rows"])
+    drivers = _driver_table(model, poses, functions, kernel_index, first_driver_row)
+    loads, gravity = _load_table(model, poses, functions)
+    row_bodies = _row_bodies(joints, drivers, first_driver_row + len(model.drivers))
     mass = np.array([b.mass for b in model.bodies], dtype=float)
     inertia = np.array([b.inertia for b in model.bodies], dtype=float)
     mechanism = Mechanism(
@@ -354,15 +409,7 @@ def build_system(model: Model, *, ideal: bool = False) -> System:
         redundant=False,
         **build_pattern(row_bodies, len(model.bodies))._asdict(),
     )
-    events = UserEvents(
-        body=_table([index[e.body] for e in model.events], (), np.int64),
-        coordinate=_table([coordinate[e.coordinate] for e in model.events], (), np.int64),
-        value=_table([e.value for e in model.events], (), np.float64),
-        direction=_table(
-            [int(EventDirection[e.direction.upper()]) for e in model.events], (), np.int64
-        ),
-    )
-    return System(mechanism=mechanism, elements=_element_rows(rows), events=events)
+    return System(mechanism, _element_rows(elements), _user_events(model, poses))
 
 
 def _element_rows(rows: dict[str, list]) -> dict[str, ElementRows]:
