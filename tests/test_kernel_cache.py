@@ -113,9 +113,9 @@ def test_a_set_locator_variable_is_warned_about_once(tmp_path):
     # numba then uses the locators it names for the kernels too: numba's own, unstamped.
     script = """
         from numba import njit
-        from jointwear.kernels.laws.normal import effective_modulus, effective_radius
-        effective_modulus(200e9, 0.3, 100e9, 0.25), effective_radius(0.01, 0.0098)
-        print(type(effective_modulus._cache._impl.locator).__name__)
+        from jointwear.kernels.laws.normal import hertz, hunt_crossley
+        hertz(1e-6, 1e10, 1.5), hunt_crossley(0.8)
+        print(type(hertz._cache._impl.locator).__name__)
     """
     env = {**os.environ, "NUMBA_CACHE_DIR": str(tmp_path)}
     warned = {**env, "NUMBA_CACHE_LOCATOR_CLASSES": "UserProvidedCacheLocator"}
