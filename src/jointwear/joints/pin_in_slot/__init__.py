@@ -1,4 +1,4 @@
-"""The pin-in-slot joint with clearance: a pin in a round-ended slot (``kernels.elements.pin_slot``).
+"""The pin-in-slot joint with clearance: a pin in a slot (``kernels.elements.pin_slot``).
 
 Wear table rows: ``surface`` is one of ``SURFACES`` (the slot's sides ``side_plus_v`` and
 ``side_minus_v``, on the side the axis turned +90 degrees points to and the other; its ends
@@ -230,8 +230,10 @@ class PinInSlotKind(ClearanceKind):
         return entry
 
     def _outside_ranges(self, c: object, row: NDArray[np.float64], duration: float) -> dict:
-        """Per range of the joint's laws (``law_ranges``): its limit, the largest value, the time
-        beyond (the kernel tracks the penetration and the Hertz patch, ``_track_ranges``)."""
+        """Per range of the joint's laws: its limit, the largest value, the time beyond.
+
+        The kernel tracks the penetration and the Hertz patch (``_track_ranges``).
+        """
         from ...model.laws.record import HERTZ_PATCH, PENETRATION
 
         ps = self.module
