@@ -100,7 +100,7 @@ def make_journal(slot, pin, centre, pin_point, damping, restitution):
     p[journal.P_CF], p[journal.P_F0] = MU, V_REG
     p[journal.P_WIDTH], p[journal.P_ESTAR] = WIDTH, E_STAR
     p[journal.P_MIN_SPEED], p[journal.P_TOL] = MIN_SPEED, TOL
-    return journal.make_journals(ints[None], p[None], 0)
+    return journal.make_tables(ints[None], p[None], 0)
 
 
 @pytest.mark.parametrize("damping", [Damping.NONE, Damping.LANKARANI_NIKRAVESH])
