@@ -14,10 +14,12 @@ import math
 
 import numpy as np
 import pytest
-from runs import disc
+from runs import EXAMPLES, disc
 from scipy.integrate import solve_ivp
+from typer.testing import CliRunner
 
 import jointwear as jw
+from jointwear.cli import app
 from jointwear.model import ModelError, parse_model
 
 MASS, INERTIA = 1.0, 1e-4  # pin body [kg, kg m^2]
@@ -408,3 +410,15 @@ def test_a_pin_beyond_the_slot_end_is_refused():
     data["bodies"][0]["position"] = [HALF + 2 * GAP, 0.0]
     with pytest.raises(ModelError, match="the pin starts beyond the slot's end"):
         jw.simulate(parse_model(data))
+
+
+def test_the_slotted_link_example_checks_and_runs():
+    # The example's quick return: check shows the joint's table, and a tenth of a turn runs.
+    path = EXAMPLES / "slotted_link.toml"
+    result = CliRunner().invoke(app, ["check", str(path)], env={"COLUMNS": "120"})
+    assert result.exit_code == 0, result.output
+    assert "pin-in-slot clearance joint 'crank_pin'" in result.output
+    assert "gap c = slot_width / 2 - R_p" in result.output
+    res = jw.simulate(jw.load_model(path, overrides=["solver.t_end=0.04"]))
+    assert res.status == "success", res.message
+    assert res.summary["clearance_joints"]["crank_pin"]["type"] == "pin_in_slot"
