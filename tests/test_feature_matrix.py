@@ -40,6 +40,7 @@ EXAMPLE_END = {
     "slider_crank": 0.006,
     "slider_crank_clearance": 0.006,
     "slider_crank_piston_clearance": 0.006,
+    "slotted_link": 0.02,
 }
 
 PERIODIC_LOADS = """
@@ -183,8 +184,8 @@ def _ending_at(text: str, end: float) -> str:
 
 MODELS = _models()
 # What a life run refuses, by what its message names: a model without a periodic driver or
-# with a load that never repeats, or without a revolute clearance joint (translational
-# clearance joints are not supported yet). Every other model runs.
+# with a load that never repeats, or without a revolute clearance joint (translational and
+# pin-in-slot clearance joints are not supported yet). Every other model runs.
 NOT_PERIODIC = "never repeats"
 NO_CYCLE = "periodic driver"
 REVOLUTE_ONLY = "revolute clearance joint"
@@ -199,6 +200,7 @@ LIFE_REFUSED = {
     "slider_crank+harmonic_slide": REVOLUTE_ONLY,
     "slider_crank+polynomial_slide": NOT_PERIODIC,
     "slider_crank+constant_speed_slide": NOT_PERIODIC,
+    "slotted_link": REVOLUTE_ONLY,
 }
 CLEARANCE_FREE = {"pendulum", "slider_crank", "slider_crank+loads"} | {
     f"slider_crank+{name}" for name in DISTANCE_DRIVERS

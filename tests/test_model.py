@@ -246,8 +246,8 @@ def _delete(path: str):
         ),
         (
             _set("joints/0/type", "revolut"),
-            "joints[0].type: unknown type 'revolut'; types are revolute, translational "
-            "(did you mean 'revolute'?)",
+            "joints[0].type: unknown type 'revolut'; types are revolute, translational, "
+            "pin_in_slot (did you mean 'revolute'?)",
         ),
         (_set("joints/0/bodies", ["rod", "rod"]), "joints[0].bodies: both are 'rod'"),
         (
@@ -282,7 +282,7 @@ def _delete(path: str):
                 ],
             ),
             "drivers[0].joint: 'hinge' is revolute; a distance driver needs an ideal "
-            "translational joint",
+            "translational or pin_in_slot joint",
         ),
         (
             _set(

@@ -48,7 +48,7 @@ def make(
     p[ps.P_CF], p[ps.P_F0] = friction_coefficient, V_REG
     p[ps.P_WEAR], p[ps.P_SHARE], p[ps.P_WIDTH] = K_WEAR, SHARE, WIDTH
     p[ps.P_ESTAR], p[ps.P_MIN_SPEED], p[ps.P_TOL] = E_STAR, MIN_SPEED, TOL
-    return ps.make_pin_slots(ints[None], p[None], snapshots)
+    return ps.make_tables(ints[None], p[None], snapshots)
 
 
 def compiled(kernel):

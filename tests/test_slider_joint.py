@@ -489,7 +489,7 @@ def test_distance_driver_cannot_drive_a_clearance_joint():
     with pytest.raises(
         jw.ModelError,
         match="'guide' is translational with clearance; a "
-        "distance driver needs an ideal translational joint",
+        "distance driver needs an ideal translational or pin_in_slot joint",
     ):
         parse_model(data)
 

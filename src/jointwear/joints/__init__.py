@@ -6,10 +6,11 @@ it here and in ``kernels/elements/__init__.py``.
 """
 
 from .kind import TOTALS, ClearanceKind
+from .pin_in_slot import KIND as PIN_IN_SLOT
 from .revolute import KIND as REVOLUTE
 from .translational import KIND as TRANSLATIONAL
 
-KINDS: tuple[ClearanceKind, ...] = (REVOLUTE, TRANSLATIONAL)
+KINDS: tuple[ClearanceKind, ...] = (REVOLUTE, TRANSLATIONAL, PIN_IN_SLOT)
 BY_NAME = {kind.name: kind for kind in KINDS}
 
 __all__ = ["BY_NAME", "KINDS", "TOTALS", "ClearanceKind"]

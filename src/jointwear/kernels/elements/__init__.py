@@ -1,11 +1,12 @@
 """Contact elements: the registered kinds, and the interface the step loop sees.
 
 A kind is one module (``journal``: the revolute clearance joint; ``slider``: the translational
-one) giving four tables (fixed table, restart state, log, scratch), ``SLOTS`` contact slots
-per element (a journal one; a slider eight: its corners and the guide's edges) and the
-functions below for its elements. The loop numbers the slots of all kinds one after the
-other, in the order of ``Elements``' fields; ``_locate`` is the one place that maps a slot to
-its kind, and the functions here fan out to the kinds.
+one; ``pin_slot``: the pin-in-slot one) giving four tables (fixed table, restart state, log,
+scratch), ``SLOTS`` contact slots per element (a journal one; a slider eight: its corners and
+the guide's edges; a pin in a slot one) and the functions below for its elements. The loop
+numbers the slots of all kinds one after the other, in the order of ``Elements``' fields;
+``_locate`` is the one place that maps a slot to its kind, and the functions here fan out to
+the kinds.
 
 To register a kind (its Python side: ``jointwear.joints``): add its module's tables as a
 field of the four tuples, and its line to ``_locate`` and to each function below.
@@ -15,7 +16,7 @@ from typing import NamedTuple
 
 from numba import njit
 
-from . import journal, slider
+from . import journal, pin_slot, slider
 
 
 class Elements(NamedTuple):
@@ -23,6 +24,7 @@ class Elements(NamedTuple):
 
     journal: journal.JournalTable
     slider: slider.SliderTable
+    pin_slot: pin_slot.PinSlotTable
 
 
 class ElementState(NamedTuple):
@@ -30,6 +32,7 @@ class ElementState(NamedTuple):
 
     journal: journal.JournalState
     slider: slider.SliderState
+    pin_slot: pin_slot.PinSlotState
 
 
 class ElementLog(NamedTuple):
@@ -37,6 +40,7 @@ class ElementLog(NamedTuple):
 
     journal: journal.JournalLog
     slider: slider.SliderLog
+    pin_slot: pin_slot.PinSlotLog
 
 
 class ElementScratch(NamedTuple):
@@ -44,15 +48,20 @@ class ElementScratch(NamedTuple):
 
     journal: journal.JournalScratch
     slider: slider.SliderScratch
+    pin_slot: pin_slot.PinSlotScratch
 
 
-KERNELS = (journal, slider)  # in the order of the tuples' fields
+KERNELS = (journal, slider, pin_slot)  # in the order of the tuples' fields
 
 
 @njit(cache=True, no_cpython_wrapper=True, inline="always")
 def slot_count(el):
     """Number of contact slots of all elements."""
-    return journal.SLOTS * el.journal.ints.shape[0] + slider.SLOTS * el.slider.ints.shape[0]
+    return (
+        journal.SLOTS * el.journal.ints.shape[0]
+        + slider.SLOTS * el.slider.ints.shape[0]
+        + pin_slot.SLOTS * el.pin_slot.ints.shape[0]
+    )
 
 
 @njit(cache=True, no_cpython_wrapper=True, inline="always")
@@ -61,7 +70,10 @@ def _locate(el, slot):
     first = journal.SLOTS * el.journal.ints.shape[0]
     if slot < first:
         return 0, slot
-    return 1, slot - first
+    second = first + slider.SLOTS * el.slider.ints.shape[0]
+    if slot < second:
+        return 1, slot - first
+    return 2, slot - second
 
 
 @njit(cache=True, no_cpython_wrapper=True, inline="always")
@@ -70,7 +82,9 @@ def owner(el, slot):
     kind, local = _locate(el, slot)
     if kind == 0:
         return kind, local // journal.SLOTS
-    return kind, local // slider.SLOTS
+    if kind == 1:
+        return kind, local // slider.SLOTS
+    return kind, local // pin_slot.SLOTS
 
 
 @njit(cache=True, no_cpython_wrapper=True, inline="always")
@@ -78,6 +92,7 @@ def add_forces(el, st, sc, q, qd, g):
     """Evaluate every element at (q, q') and add its contact forces to g [N, N, N m]."""
     journal.add_forces(el.journal, st.journal, sc.journal, q, qd, g)
     slider.add_forces(el.slider, st.slider, sc.slider, q, qd, g)
+    pin_slot.add_forces(el.pin_slot, st.pin_slot, sc.pin_slot, q, qd, g)
 
 
 @njit(cache=True, no_cpython_wrapper=True, inline="always")
@@ -86,7 +101,9 @@ def penetration_excess(el, st, sc, slot, q, qd):
     kind, local = _locate(el, slot)
     if kind == 0:
         return journal.penetration_excess(el.journal, st.journal, sc.journal, local, q, qd)
-    return slider.penetration_excess(el.slider, st.slider, sc.slider, local, q, qd)
+    if kind == 1:
+        return slider.penetration_excess(el.slider, st.slider, sc.slider, local, q, qd)
+    return pin_slot.penetration_excess(el.pin_slot, st.pin_slot, sc.pin_slot, local, q, qd)
 
 
 @njit(cache=True, no_cpython_wrapper=True, inline="always")
@@ -95,7 +112,9 @@ def tolerance(el, slot):
     kind, local = _locate(el, slot)
     if kind == 0:
         return journal.tolerance(el.journal, local)
-    return slider.tolerance(el.slider, local)
+    if kind == 1:
+        return slider.tolerance(el.slider, local)
+    return pin_slot.tolerance(el.pin_slot, local)
 
 
 @njit(cache=True, no_cpython_wrapper=True, inline="always")
@@ -104,7 +123,9 @@ def in_contact(el, st, slot):
     kind, local = _locate(el, slot)
     if kind == 0:
         return st.journal.contact_on[local] == 1
-    return st.slider.contact_on[local] == 1
+    if kind == 1:
+        return st.slider.contact_on[local] == 1
+    return st.pin_slot.contact_on[local] == 1
 
 
 @njit(cache=True, no_cpython_wrapper=True, inline="always")
@@ -115,7 +136,11 @@ def begin_period(el, st, sc, log, slot, q, qd, info):
         return journal.begin_period(
             el.journal, st.journal, sc.journal, log.journal, local, q, qd, info
         )
-    return slider.begin_period(el.slider, st.slider, sc.slider, log.slider, local, q, qd, info)
+    if kind == 1:
+        return slider.begin_period(el.slider, st.slider, sc.slider, log.slider, local, q, qd, info)
+    return pin_slot.begin_period(
+        el.pin_slot, st.pin_slot, sc.pin_slot, log.pin_slot, local, q, qd, info
+    )
 
 
 @njit(cache=True, no_cpython_wrapper=True, inline="always")
@@ -129,18 +154,25 @@ def accumulate(el, st, sc, log, t_old, t_new, q_mid, qd_mid, snap_times, first):
         el.slider, st.slider, sc.slider, log.slider, t_old, t_new, q_mid, qd_mid,
         snap_times, first,
     )  # fmt: skip
+    pin_slot.accumulate(
+        el.pin_slot, st.pin_slot, sc.pin_slot, log.pin_slot, t_old, t_new, q_mid, qd_mid,
+        snap_times, first,
+    )  # fmt: skip
 
 
 @njit(cache=True, no_cpython_wrapper=True, inline="always")
 def write_outputs(el, sc, row, c):
     """Every element's time-series columns from its last evaluation; the next free column."""
     c = journal.write_outputs(el.journal, sc.journal, row, c)
-    return slider.write_outputs(el.slider, sc.slider, row, c)
+    c = slider.write_outputs(el.slider, sc.slider, row, c)
+    return pin_slot.write_outputs(el.pin_slot, sc.pin_slot, row, c)
 
 
 @njit(cache=True, no_cpython_wrapper=True, inline="always")
 def elastic_energy(el, sc):
     """Elastic energy stored in the contacts of the last evaluation [J]."""
-    return journal.elastic_energy(el.journal, sc.journal) + slider.elastic_energy(
-        el.slider, sc.slider
+    return (
+        journal.elastic_energy(el.journal, sc.journal)
+        + slider.elastic_energy(el.slider, sc.slider)
+        + pin_slot.elastic_energy(el.pin_slot, sc.pin_slot)
     )

@@ -178,7 +178,7 @@ N_IMPACT_INFO = 4
 OUTPUT_NAMES = (
     "along", "across", "fx", "fy", "fn", "vt", "friction_power", "damping_power",
 )  # fmt: skip
-DEGREES_OF_FREEDOM = 2  # the pin centre along and across the slot
+DEGREES_OF_FREEDOM = 1  # the pin centre across the slot (the ideal joint frees it along)
 SLOTS = 1  # contact slots per joint
 
 
@@ -210,7 +210,7 @@ class PinSlotScratch(NamedTuple):
     contact: np.ndarray  # (np, N_CONTACT)
 
 
-def make_pin_slots(
+def make_tables(
     ints: np.ndarray, params: np.ndarray, snapshots: int
 ) -> tuple[PinSlotTable, PinSlotState, PinSlotLog, PinSlotScratch]:
     """Allocate a run's arrays for the joints of ``ints`` and ``params``, unworn (Python)."""
