@@ -6,11 +6,19 @@ have no rows), ``position_m`` the segment's centre along its surface from the su
 in its body's frame (the guide's from the joint's first point, the slider's from its centre,
 positive along the axis). Impact rows: the contact (a corner or a guide edge,
 ``kernels.elements.slider.CONTACT_NAMES``) and where along the guide it is.
+
+Life runs: the clearance growth is that of the worse side, top or bottom, each side's taken
+as its guide surface's deepest segment plus its slider surface's deepest, as if the two met
+wherever they are (at most what the slider can move across its guide, tilted or not, beyond
+the nominal gap; conservative). An unbounded guide keeps no wear map, so there the growth
+is the slider's alone. A slider worn through its height (top and bottom at one segment)
+stops them.
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from types import MappingProxyType
 
 import numpy as np
@@ -67,6 +75,11 @@ class TranslationalKind(ClearanceKind):
     older_state_names = MappingProxyType({field: f"slider_{field}" for field in STATE_FIELDS})
     pins_points = False
     slides = True
+    life_runs = True
+    growth_limit = (
+        "The contact stiffness is that of the nominal corners and the worn profiles enter "
+        "only as depths across the guide"
+    )
     figures = (
         ("slider_motion", "plot_slider_motion"),
         ("slider_corner_forces", "plot_corner_forces"),
@@ -208,7 +221,7 @@ class TranslationalKind(ClearanceKind):
     ) -> dict[str, object]:
         c = joint.clearance
         entry = common_figures(self, totals, duration)
-        entry = {"type": entry.pop("type"), "gap_m": c.clearance_gap, **entry}
+        entry = {"type": entry.pop("type"), self.gap_key: c.clearance_gap, **entry}
         for surface, length in surfaces(joint).items():
             depth, peak = deepest(wear[SURFACES.index(surface), : c.segments])
             entry[f"max_wear_depth_{surface}_m"] = depth
@@ -216,6 +229,45 @@ class TranslationalKind(ClearanceKind):
                 None if peak is None else float(segment_centres(length, c.segments)[peak])
             )
         return entry
+
+    @override
+    def mapped_surfaces(self, joint: object) -> tuple[str, ...]:
+        return tuple(surfaces(joint))
+
+    @override
+    def clearance_growth(
+        self, joint: object, wear: NDArray[np.float64], timeseries: Sequence[object]
+    ) -> float:
+        n = joint.clearance.segments
+        deepest = {s: float(wear[SURFACES.index(s), :n].max()) for s in surfaces(joint)}
+        return max(
+            deepest.get(f"guide_{side}", 0.0) + deepest[f"slider_{side}"]
+            for side in ("top", "bottom")
+        )
+
+    @override
+    def worn_volume(self, joint: object, wear: NDArray[np.float64]) -> float:
+        """Depth x segment length x width, summed over the mapped surfaces' segments."""
+        c = joint.clearance
+        return float(
+            sum(
+                wear[SURFACES.index(surface), : c.segments].sum() * length / c.segments
+                for surface, length in surfaces(joint).items()
+            )
+            * c.width
+        )
+
+    @override
+    def worn_through(self, joint: object, wear: NDArray[np.float64], when: str) -> str | None:
+        c = joint.clearance
+        top, bottom = (wear[SURFACES.index(f"slider_{s}"), : c.segments] for s in ("top", "bottom"))
+        depth = float((top + bottom).max())
+        if depth < c.slider_height:
+            return None
+        return (
+            f"the slider would be worn {depth * 1e3:.4g} mm deep, top and bottom together, "
+            f"{when}, through its height {c.slider_height * 1e3:.4g} mm"
+        )
 
 
 KIND = TranslationalKind()
