@@ -28,9 +28,9 @@ import jointwear as jw
 from jointwear.cli import app
 from jointwear.engine.simulate import simulate
 from jointwear.io import append, write_text
+from jointwear.joints.revolute.growth import clearance_growth
 from jointwear.studies.life import files as lifetime_files
 from jointwear.studies.life import update as lifetime_update
-from jointwear.studies.life.records import clearance_growth
 from jointwear.studies.life.settings import cycle_driver
 from jointwear.studies.life.study import life
 from jointwear.studies.sweep.study import sweep

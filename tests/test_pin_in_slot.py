@@ -422,3 +422,26 @@ def test_the_slotted_link_example_checks_and_runs():
     res = jw.simulate(jw.load_model(path, overrides=["solver.t_end=0.04"]))
     assert res.status == "success", res.message
     assert res.summary["clearance_joints"]["crank_pin"]["type"] == "pin_in_slot"
+
+
+def test_the_life_measures_by_hand():
+    # Uniform depths d_s on every slot cell and d_p on the pin: the volume is the depths
+    # times the surfaces' areas; the growth bound is the deepest slot cell plus the deepest
+    # pin cell; a pin worn past its radius leaves the model.
+    from jointwear.joints.pin_in_slot import KIND, SURFACES
+
+    data = pin_model(clearance(segments=10, sectors=12), [], 1e-3)
+    joint = parse_model(data).joints[0]
+    wear = np.zeros((5, 12))
+    d_s, d_p = 2e-6, 3e-6
+    wear[:4, :10] = d_s  # sides' 10 segments; the ends' 6 sectors are the first 6 columns
+    wear[4, :12] = d_p
+    area_slot = WIDTH * (2 * 2 * HALF + 2 * math.pi * R_S)  # two sides, two half circles
+    area_pin = WIDTH * 2 * math.pi * R_P
+    assert KIND.worn_volume(joint, wear) == pytest.approx(d_s * area_slot + d_p * area_pin)
+    wear[2, 3] = 5e-6  # one deeper end cell
+    assert KIND.clearance_growth(joint, wear, []) == pytest.approx(5e-6 + d_p)
+    assert KIND.worn_through(joint, wear, "at 10 cycles") is None
+    wear[4, 0] = R_P
+    assert "the pin would be worn" in KIND.worn_through(joint, wear, "at 10 cycles")
+    assert set(KIND.mapped_surfaces(joint)) == set(SURFACES)

@@ -101,11 +101,6 @@ REFERENCES: dict[str, str] = {
         "B.J. Hamrock, S.R. Schmid, B.O. Jacobson, Fundamentals of Fluid Film Lubrication, "
         "2nd ed., Marcel Dekker, New York (2004)"
     ),
-    "flores2008translational": (
-        'P. Flores, J. Ambrósio, J.C.P. Claro, H.M. Lankarani, "Translational joints with '
-        'clearance in rigid multibody systems", Journal of Computational and Nonlinear '
-        "Dynamics 3 (2008) 011007"
-    ),
     "baumgarte1972": (
         'J. Baumgarte, "Stabilization of constraints and integrals of motion in dynamical '
         'systems", Computer Methods in Applied Mechanics and Engineering 1 (1972) 1-16'
@@ -136,6 +131,7 @@ REFERENCES: dict[str, str] = {
         "Computational and Applied Mathematics 6 (1980) 19-26"
     ),
 }
+REFERENCES |= {key: text for kind in KINDS for key, text in kind.references.items()}
 
 # Per clearance-table key, per law: its references, read from the law records.
 LAW_CITATIONS: dict[str, dict[str, tuple[str, ...]]] = {

@@ -16,6 +16,7 @@ from rich.table import Table
 from rich.text import Text
 
 if TYPE_CHECKING:
+    from ..joints import ClearanceKind
     from ..model import ModelError
 
 err = Console(stderr=True)
@@ -115,3 +116,10 @@ def one_line(text: str) -> str:
         char if char.isprintable() or char == " " else char.encode("unicode_escape").decode()
         for char in text
     )
+
+
+def joint_kind(joint: dict) -> ClearanceKind:
+    """The joint type of a clearance joint's summary (an older one's: the first kind)."""
+    from ..joints import BY_NAME, KINDS
+
+    return BY_NAME[joint.get("type", KINDS[0].name)]

@@ -20,6 +20,7 @@ from .common import (
     end_time,
     err,
     fail,
+    joint_kind,
     keep_whole,
     number,
     one_line,
@@ -144,16 +145,9 @@ def _report(results: Results, out_dir: Path) -> None:
         raise typer.Exit(code=1)
 
 
-def _kind(joint: dict) -> ClearanceKind:
-    """The joint type of a clearance joint's summary (an older one's: the first kind)."""
-    from ..joints import BY_NAME, KINDS
-
-    return BY_NAME[joint.get("type", KINDS[0].name)]
-
-
 def _range_warnings(name: str, joint: dict) -> list[str]:
     """One warning per law assumption the joint's run went beyond (summary.json has them)."""
-    words = _kind(joint).range_words
+    words = joint_kind(joint).range_words
     return [
         f"warning: joint '{name}': {words.get(check, check)} reached {entry['largest']:.3g}, "
         f"beyond the law's range {entry['limit']:.3g} for "
@@ -171,7 +165,7 @@ def _joint_line(name: str, joint: dict, steady: bool) -> str:
         depth.format(
             surface, joint[f"max_wear_depth_{surface}_m"] * 1e6, _wear_place(joint, surface)
         )
-        for surface in _kind(joint).surfaces
+        for surface in joint_kind(joint).surfaces
         if f"max_wear_depth_{surface}_m" in joint  # an unbounded guide keeps no wear map
     ]
     whole = joint.get("whole_run", {})

@@ -7,7 +7,19 @@ from typing import Annotated
 
 import typer
 
-from .common import PLAIN, T_END, EndTime, ModelPath, Overrides, end_time, err, fail, one_line, out
+from .common import (
+    PLAIN,
+    T_END,
+    EndTime,
+    ModelPath,
+    Overrides,
+    end_time,
+    err,
+    fail,
+    joint_kind,
+    one_line,
+    out,
+)
 from .progress import CompileNotice, ProgressBar, SweepProgress
 
 
@@ -255,9 +267,13 @@ def _life_line(name: str, joint: dict) -> str:
     """One line of a clearance joint's wear after a life run."""
     at = joint["cycles_to_clearance_growth_50pct"]
     half = f"at {at:,.0f} cycles" if at is not None else "not reached"
+    depths = [
+        f"{surface} {joint[f'max_wear_depth_{surface}_m'] * 1e6:.4g} µm"
+        for surface in joint_kind(joint).surfaces
+        if f"max_wear_depth_{surface}_m" in joint  # an unbounded guide keeps no wear map
+    ]
     return (
-        f"{name}: max wear depth journal {joint['max_wear_depth_journal_m'] * 1e6:.4g} µm, "
-        f"bearing {joint['max_wear_depth_bearing_m'] * 1e6:.4g} µm; clearance grown by "
+        f"{name}: max wear depth {', '.join(depths)}; clearance grown by "
         f"{joint['clearance_growth_m'] * 1e6:.4g} µm ({joint['clearance_growth_fraction']:.0%});"
         f" 50% growth {half}"
     )

@@ -3,12 +3,15 @@
 ``life_wear.png``: maximum wear depth per surface and effective clearance growth, peak contact
 force and the driver's torque range, against cycles, the clearance growth shaded over its
 uncertainty band where the run has one (life_band.csv); ``life_profiles.png``: the wear profiles
-of every clearance joint at a few cycle counts, in polar form (angles in each surface's body
-frame, as in the wear table).
+of every clearance joint at a few cycle counts, each drawn by its kind
+(``draw_life_profiles`` of its ``figures_module``: a revolute joint's in polar form, a
+translational joint's along its surfaces).
 """
 
 from __future__ import annotations
 
+from importlib import import_module
+from itertools import cycle
 from pathlib import Path
 
 import numpy as np
@@ -18,14 +21,13 @@ from matplotlib.figure import Figure  # figures without pyplot: no global backen
 
 from ..model import Model
 from ..studies.life.files import FIGURE_FILES
-from ..studies.life.records import GROWTH_MARK, cycles_at, driver_columns
+from ..studies.life.records import GROWTH_MARK, cycles_at, driver_columns, life_joints
 from .files import save_png
 from .legends import LEGEND_ROOM, legend_beside
 from .scaling import length_unit
 
 PROFILE_COUNTS = 5  # profiles drawn: at about 1/5, 2/5, ... of the cycles reached
-LENGTH_COLUMNS = ("_wear_depth_journal_m", "_wear_depth_bearing_m", ".clearance_growth_m")
-PLOT_ORDER = ("journal", "bearing")  # the journal first, as in the paper's Figs. 8-10
+STYLES = ("-", "--", "-.", (0, (1, 1)))  # of each surface's deepest wear, in report order
 
 
 def plot_life_wear(
@@ -43,16 +45,17 @@ def plot_life_wear(
     fig = Figure(figsize=(8.0 + LEGEND_ROOM, 9.0), layout="constrained")
     depth, force, torque = fig.subplots(3, 1, sharex=True)
     cycles = table["cycles"].to_numpy()
-    lengths = [c for c in table if c.endswith(LENGTH_COLUMNS)]
-    marks_m = [
-        GROWTH_MARK * joint.clearance.radial_clearance for joint in model.joints_of("revolute")
-    ]
+    lengths = [c for c in table if ".max_wear_depth_" in c or c.endswith(".clearance_growth_m")]
+    joints = [(kind, joint) for kind, _, joint in life_joints(model)]
+    marks_m = [GROWTH_MARK * kind.gap(joint) for kind, joint in joints]
     unit, per_m = length_unit([*table[lengths].to_numpy().ravel(), *marks_m])
-    for joint in model.joints_of("revolute"):
+    for (kind, joint), mark_m in zip(joints, marks_m, strict=True):
         name = joint.name
-        for surface, style in zip(PLOT_ORDER, ("-", "--"), strict=True):
+        mapped = kind.mapped_surfaces(joint)
+        shown = [surface for surface in kind.surfaces if surface in mapped]
+        for surface, style in zip(shown, cycle(STYLES)):
             values = table[f"{name}.max_wear_depth_{surface}_m"] * per_m
-            depth.plot(cycles, values, style, label=f"{name}: {surface}, deepest sector")
+            depth.plot(cycles, values, ls=style, label=f"{name}: {surface}, deepest")
         growth = table[f"{name}.clearance_growth_m"] * per_m
         line = depth.plot(cycles, growth, "-", lw=2.0, label=f"{name}: clearance growth")[0]
         if band is not None:
@@ -61,7 +64,7 @@ def plot_life_wear(
                 band["cycles"], low, high, color=line.get_color(), alpha=0.25, lw=0,
                 label=f"{name}: clearance growth, band of {band['runs'].max()} runs",
             )  # fmt: skip
-        mark = GROWTH_MARK * joint.clearance.radial_clearance * per_m
+        mark = mark_m * per_m
         depth.axhline(mark, color=line.get_color(), ls=":", lw=1.0)
         reached = cycles_at(table["cycles"], growth, mark)
         text = f"{GROWTH_MARK:.0%} of c" + (f" at {reached:,.0f} cycles" if reached else "")
@@ -79,8 +82,8 @@ def plot_life_wear(
     legend_beside(depth)
     force.set_ylabel("peak contact force\nof the measured cycles [kN]")
     legend_beside(force)
-    kind, unit = ("torque", "N m") if range_column.startswith("torque") else ("force", "N")
-    torque.set_ylabel(f"{kind} range of driver\n'{driver}', max - min [{unit}]")
+    what, unit = ("torque", "N m") if range_column.startswith("torque") else ("force", "N")
+    torque.set_ylabel(f"{what} range of driver\n'{driver}', max - min [{unit}]")
     torque.set_xlabel("cycles")
     for ax in (depth, force, torque):
         ax.grid(alpha=0.3)
@@ -106,31 +109,16 @@ def profile_updates(table: pd.DataFrame) -> list[int]:
 
 
 def plot_life_profiles(model: Model, table: pd.DataFrame, profiles: pd.DataFrame) -> Figure:
-    """Wear depth per sector of both surfaces, polar, at a few cycle counts."""
-    joints = model.joints_of("revolute")
-    unit, per_m = length_unit(profiles["depth_m"])
+    """Wear profiles of every clearance joint at a few cycle counts, a row each."""
+    joints = [(kind, joint) for kind, _, joint in life_joints(model)]
     updates = profile_updates(table)
     colours = colormaps["viridis"](np.linspace(0.0, 0.9, len(updates)))
     fig = Figure(figsize=(10.0, 5.0 * len(joints) + 0.5), layout="constrained")
-    for k, joint in enumerate(joints):
-        for s, surface in enumerate(PLOT_ORDER):
-            ax = fig.add_subplot(len(joints), 2, 2 * k + s + 1, projection="polar")
-            for update, colour in zip(updates, colours, strict=True):
-                rows = profiles[
-                    (profiles["update"] == update)
-                    & (profiles["joint"] == joint.name)
-                    & (profiles["surface"] == surface)
-                ].sort_values("sector")
-                theta = np.radians(np.append(rows["angle_deg"], rows["angle_deg"].iloc[0]))
-                depth = np.append(rows["depth_m"], rows["depth_m"].iloc[0]) * per_m
-                label = f"{int(rows['cycles'].iloc[0]):,} cycles"
-                ax.plot(theta, depth, color=colour, lw=1.2, label=label)
-            ax.set_rlabel_position(67.5)
-            body = joint.bodies[0] if surface == "bearing" else joint.bodies[1]
-            title = f"{joint.name}: {surface} ({body})\nwear depth [{unit}]"
-            ax.set_title(title, fontsize="medium")
-            if s == 0:
-                ax.legend(loc="lower left", bbox_to_anchor=(-0.25, -0.12), fontsize="small")
+    rows = fig.add_gridspec(len(joints), 1)
+    for row, (kind, joint) in zip(rows, joints, strict=True):
+        draw = import_module(kind.figures_module).draw_life_profiles
+        mine = profiles[profiles["joint"] == joint.name]
+        draw(fig, row, joint, mine, dict(zip(updates, colours, strict=True)))
     fig.suptitle(f"{model.name}: wear profiles as the cycles accumulate")
     return fig
 

@@ -25,6 +25,17 @@ a kind. A kind gives:
    ``figures_module`` (its ``figures.py``), which also has ``save_figures(results, folder)``;
    ``animation_module``: how the animation draws its joints (an ``Actor`` each), with
    ``gap(joint)`` magnified. Both modules import matplotlib, and only they in the kind.
+9. Life runs (``studies.life``): ``life_runs``, whether they support the kind; the profiles
+   they extrapolate are the cells of ``wear_rows``, on ``mapped_surfaces(joint)``, and an
+   update's depth bound is a share of ``gap(joint)`` plus the growth.
+   ``clearance_growth(joint, wear, timeseries)``: the milestone measure, how far the gap has
+   grown [m] with profiles ``wear`` at the motion of the measured cycles (``timeseries``),
+   conservatively where the kind cannot tell exactly; ``worn_volume(joint, wear)`` [m^3];
+   ``worn_through(joint, wear, when)``: why profiles would leave the model (None if not);
+   ``growth_limit``: why the model stops describing a joint whose gap has grown much;
+   ``gap_key``: the gap's key in summaries. ``figures_module`` has
+   ``draw_life_profiles(fig, place, joint, profiles, updates)``: the joint's profiles at a few
+   updates, drawn into the subplot spec ``place``.
 
 The kernel module gives ``make_tables(ints, params, snapshots)`` -> (table, state, log,
 scratch), ``N_INTS``, ``N_PARAMS``, ``N_IMPACT_INFO``, ``SLOTS`` (contact slots per joint) and
@@ -33,7 +44,7 @@ scratch), ``N_INTS``, ``N_PARAMS``, ``N_IMPACT_INFO``, ``SLOTS`` (contact slots 
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from importlib import import_module
 from types import MappingProxyType, ModuleType
 from typing import Any, NamedTuple
@@ -83,10 +94,14 @@ class ClearanceKind:
     older_state_names: dict[str, str] = MappingProxyType({})  # restart arrays' names in
     # states saved before the kinds were keyed by name (``results.run_state``)
     slides: bool = False  # whether a distance driver can prescribe its ideal joint's slide
+    references: dict[str, str] = MappingProxyType({})  # its own papers: key -> citation text
     citations: tuple[str, ...] = ()  # keys of ``citations.REFERENCES`` behind the kind's model
     surfaces: tuple[str, ...] = ()  # its worn surfaces, in the order reports list them
     range_words: dict[str, str] = MappingProxyType({})  # outside_law_ranges' checks in words
     ideal_rows: tuple[str, ...] = ()  # what each constraint equation of its ideal joint holds
+    gap_key: str = "gap_m"  # the gap's key in its summaries (``gap``)
+    life_runs: bool = False  # whether life runs (``studies.life``) support the kind
+    growth_limit: str = ""  # why a gap grown much leaves the model, a sentence for life runs
 
     @property
     def module(self) -> ModuleType:
@@ -161,6 +176,52 @@ class ClearanceKind:
     ) -> dict[str, object]:
         """The joint's figures for ``summary.json`` (SI units in the keys)."""
         raise NotImplementedError
+
+    def mapped_surfaces(self, joint: Any) -> tuple[str, ...]:
+        """The joint's surfaces with a wear map, in the order of ``wear_rows``."""
+        raise NotImplementedError
+
+    def clearance_growth(
+        self, joint: Any, wear: NDArray[np.float64], timeseries: Sequence[Any]
+    ) -> float:
+        """How far the joint's gap has grown [m] with profiles ``wear`` (this joint's).
+
+        ``timeseries``: the tables of the cycles whose motion the growth is judged at.
+        """
+        raise NotImplementedError
+
+    def worn_volume(self, joint: Any, wear: NDArray[np.float64]) -> float:
+        """The volume [m^3] the profiles ``wear`` (this joint's) hold."""
+        raise NotImplementedError
+
+    def worn_through(self, joint: Any, wear: NDArray[np.float64], when: str) -> str | None:
+        """Why profiles ``wear`` would leave the model, a clause naming ``when``; None if not."""
+        return None
+
+
+def segment_centres(length: float, segments: int) -> NDArray[np.float64]:
+    """Centres of a surface's segments from its middle [m]."""
+    return (np.arange(segments) + 0.5) * length / segments - 0.5 * length
+
+
+def range_report(
+    limits: dict[str, float], totals: dict[str, tuple[int, int]], row: NDArray, duration: float
+) -> dict:
+    """``outside_law_ranges``: per range, its limit, the largest value and the time beyond.
+
+    ``limits``: the laws' ranges by name (``ClearanceTable.law_ranges``) that the kind
+    checks; ``totals``: their (time beyond, largest value) columns in the kernel's ``row``;
+    ``duration`` [s]: the time the totals were gathered over.
+    """
+    return {
+        name: {
+            "limit": float(limit),
+            "largest": float(row[totals[name][1]]),
+            "time_beyond_s": float(row[totals[name][0]]),
+            "time_fraction_beyond": float(row[totals[name][0]] / duration) if duration else 0.0,
+        }
+        for name, limit in limits.items()
+    }
 
 
 def common_figures(kind: ClearanceKind, totals: NDArray[np.float64], duration: float) -> dict:

@@ -15,14 +15,22 @@ law-range checks (``outside_law_ranges``).
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from types import MappingProxyType
 
 import numpy as np
 from numpy.typing import NDArray
 from typing_extensions import override
 
-from ..kind import PENETRATION_SHARES, ClearanceKind, common_figures, deepest, stiffness_rows
-from ..translational import segment_centres
+from ..kind import (
+    PENETRATION_SHARES,
+    ClearanceKind,
+    common_figures,
+    deepest,
+    range_report,
+    segment_centres,
+    stiffness_rows,
+)
 from .schema import PinInSlotJoint
 
 HERTZ_REFERENCE_FORCES = (100.0, 1000.0)  # loads at which `check` shows the Hertz patch [N]
@@ -62,6 +70,18 @@ class PinInSlotKind(ClearanceKind):
     figures_module = f"{__name__}.figures"
     animation_module = f"{__name__}.animation"
     surfaces = ("pin", *SIDES, *ENDS)  # the moving part first, as the revolute joint's journal
+    references = MappingProxyType({
+        "skrinjar2017": (
+            'I. Skrinjar, J. Slavič, M. Boltežar, "A validated model for a pin-slot clearance '
+            'joint", Nonlinear Dynamics 88 (2017) 131-143'
+        ),
+    })  # fmt: skip
+    citations = ("skrinjar2017",)  # the pin-slot contact's geometry
+    life_runs = True
+    growth_limit = (
+        "The contact stiffness is that of the nominal radii and the worn profiles enter only "
+        "as depths along the contact's normal"
+    )
     range_words = MappingProxyType({
         "penetration_over_clearance": "penetration / gap",
         "hertz_half_width_over_journal_radius": "Hertz half-width / pin radius",
@@ -229,27 +249,54 @@ class PinInSlotKind(ClearanceKind):
             entry[f"max_wear_position_{surface}_m"] = None if peak is None else centres[peak]
         return entry
 
-    def _outside_ranges(self, c: object, row: NDArray[np.float64], duration: float) -> dict:
-        """Per range of the joint's laws: its limit, the largest value, the time beyond.
+    @override
+    def mapped_surfaces(self, joint: object) -> tuple[str, ...]:
+        return tuple(cells(joint))
 
-        The kernel tracks the penetration and the Hertz patch (``_track_ranges``).
-        """
+    @override
+    def clearance_growth(
+        self, joint: object, wear: NDArray[np.float64], timeseries: Sequence[object]
+    ) -> float:
+        """The deepest slot surface plus the deepest pin cell: an upper bound, as if they met."""
+        slot = max(
+            float(wear[SURFACES.index(s), : len(x)].max())
+            for s, x in cells(joint).items()
+            if s != "pin"
+        )
+        return slot + float(wear[SURFACES.index("pin"), : joint.clearance.sectors].max())
+
+    @override
+    def worn_volume(self, joint: object, wear: NDArray[np.float64]) -> float:
+        """Depth x cell length x width, summed over every mapped surface's cells."""
+        c = joint.clearance
+        lengths = {"pin": 2.0 * math.pi * c.pin_radius, **dict.fromkeys(SIDES, c.slot_length),
+                   **dict.fromkeys(ENDS, math.pi * c.slot_half_width)}  # fmt: skip
+        return c.width * sum(
+            float(wear[SURFACES.index(s), : len(x)].sum()) * lengths[s] / len(x)
+            for s, x in cells(joint).items()
+        )
+
+    @override
+    def worn_through(self, joint: object, wear: NDArray[np.float64], when: str) -> str | None:
+        c = joint.clearance
+        depth = float(wear[SURFACES.index("pin"), : c.sectors].max())
+        if depth < c.pin_radius:
+            return None
+        return (
+            f"the pin would be worn {depth * 1e3:.4g} mm deep {when}, through its radius "
+            f"{c.pin_radius * 1e3:.4g} mm"
+        )
+
+    def _outside_ranges(self, c: object, row: NDArray[np.float64], duration: float) -> dict:
+        """The penetration and the Hertz patch the kernel tracks (``_track_ranges``)."""
         from ...model.laws.record import HERTZ_PATCH, PENETRATION
 
         ps = self.module
-        totals = {  # (time beyond, largest value) of each range a law here may have
+        totals = {
             PENETRATION: (ps.T_DEPTH_TIME, ps.T_DEPTH_MAX),
             HERTZ_PATCH: (ps.T_PATCH_TIME, ps.T_PATCH_MAX),
         }
-        return {
-            name: {
-                "limit": float(limit),
-                "largest": float(row[totals[name][1]]),
-                "time_beyond_s": float(row[totals[name][0]]),
-                "time_fraction_beyond": float(row[totals[name][0]] / duration) if duration else 0.0,
-            }
-            for name, limit in c.law_ranges().items()
-        }
+        return range_report(c.law_ranges(), totals, row, duration)
 
 
 KIND = PinInSlotKind()

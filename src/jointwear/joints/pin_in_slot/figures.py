@@ -12,8 +12,10 @@ import math
 from pathlib import Path
 
 import numpy as np
+import pandas as pd
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure  # figures without pyplot: no global backend switch
+from matplotlib.gridspec import SubplotSpec
 
 from ...figures.crank import crank_abscissa, set_abscissa
 from ...figures.files import save_pngs
@@ -173,6 +175,37 @@ def plot_wear(results: Results) -> Figure:
         pin.set_title(f"{joint.name}: pin", loc="left", fontsize="medium")
     fig.suptitle(f"{results.model.name}: wear depth at t = {t_end:.4g} s")
     return fig
+
+
+def draw_life_profiles(
+    fig: Figure, place: SubplotSpec, joint: PinInSlotJoint, profiles: pd.DataFrame,
+    updates: dict,
+) -> None:  # fmt: skip
+    """Wear depth along the slot's sides, its ends and the pin at a few updates of a life run.
+
+    The first surface of each pair solid, the second dashed. ``profiles``: the joint's rows
+    of a life run's profiles.csv; ``updates``: the updates drawn, each with its colour.
+    """
+    unit, per_m = length_unit(profiles["depth_m"])
+    cells = place.subgridspec(1, 3)
+    groups = (("slot sides", SIDES, "along the slot from its point"),
+              ("slot ends", ENDS, "along the end's arc from the slot's axis"),
+              ("pin", ("pin",), "along the pin's circle"))  # fmt: skip
+    for n, (title, surfaces, where) in enumerate(groups):
+        ax = fig.add_subplot(cells[0, n])
+        for update, colour in updates.items():
+            rows = profiles[profiles["update"] == update]
+            for surface, style in zip(surfaces, ("-", "--"), strict=False):
+                line = rows[rows["surface"] == surface].sort_values("sector")
+                label = f"{int(rows['cycles'].iloc[0]):,} cycles" if style == "-" else None
+                ax.plot(line["position_m"] * MM, line["depth_m"] * per_m, ls=style,
+                        color=colour, lw=1.2, label=label)  # fmt: skip
+        ax.set_title(f"{joint.name}: {title}", loc="left", fontsize="medium")
+        ax.set_xlabel(f"{where} [mm]")
+        ax.set_ylabel(f"wear depth [{unit}]")
+        ax.set_ylim(bottom=0.0)
+        ax.grid(alpha=0.3)
+    ax.legend(fontsize="small")
 
 
 def save_figures(results: Results, folder: str | Path) -> list[Path]:

@@ -3,12 +3,15 @@
 Wear table rows: ``surface`` is ``bearing`` or ``journal``, ``angle_deg`` the sector's centre
 in the surface's body frame. Impact rows: the contact's angle in the bearing's and the
 journal's frames. Summary: the common figures, the radial clearance, the deepest wear of each
-surface and where, and the law-range checks (``outside_law_ranges``).
+surface and where, and the law-range checks (``outside_law_ranges``). Life runs: the
+clearance growth is the largest over directions and relative angles (``growth``); a journal
+worn through its radius stops them.
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from types import MappingProxyType
 
 import numpy as np
@@ -21,6 +24,7 @@ from ..kind import (
     ClearanceKind,
     common_figures,
     deepest,
+    range_report,
     stiffness_rows,
 )
 from .schema import RevoluteJoint
@@ -72,6 +76,12 @@ class RevoluteKind(ClearanceKind):
         "eccentricity_ratio": "eccentricity ratio (film model)",
     })  # fmt: skip
     ideal_rows = ("x", "y")
+    gap_key = "radial_clearance_m"
+    life_runs = True
+    growth_limit = (
+        "The contact stiffness and Hertz patch are those of the nominal radii and the worn "
+        "profile enters only radially"
+    )
     older_state_names = MappingProxyType({field: field for field in STATE_FIELDS})
     pins_points = True
     figures = (  # the paper's Figs. 7-10
@@ -214,7 +224,7 @@ class RevoluteKind(ClearanceKind):
         entry = common_figures(self, totals, duration)
         entry = {
             "type": entry.pop("type"),
-            "radial_clearance_m": c.radial_clearance,
+            self.gap_key: c.radial_clearance,
             **entry,
             "outside_law_ranges": _outside_ranges(jc, c, totals, duration),
         }
@@ -228,12 +238,42 @@ class RevoluteKind(ClearanceKind):
             )
         return entry
 
+    @override
+    def mapped_surfaces(self, joint: object) -> tuple[str, ...]:
+        return SURFACES
+
+    @override
+    def clearance_growth(
+        self, joint: object, wear: NDArray[np.float64], timeseries: Sequence[object]
+    ) -> float:
+        from .growth import clearance_growth, relative_angle_range
+
+        n = joint.clearance.sectors
+        psi = relative_angle_range(joint.bodies, timeseries)
+        return clearance_growth(wear[0, :n], wear[1, :n], psi)
+
+    @override
+    def worn_volume(self, joint: object, wear: NDArray[np.float64]) -> float:
+        """Depth x R x 2 pi / N x L, summed over both surfaces' sectors."""
+        c = joint.clearance
+        arc = 2.0 * math.pi / c.sectors * c.width
+        bearing, journal = wear[0, : c.sectors].sum(), wear[1, : c.sectors].sum()
+        return float((bearing * c.bearing_radius + journal * c.journal_radius) * arc)
+
+    @override
+    def worn_through(self, joint: object, wear: NDArray[np.float64], when: str) -> str | None:
+        c = joint.clearance
+        journal = wear[SURFACES.index("journal"), : c.sectors].max()
+        if journal < c.journal_radius:
+            return None
+        return (
+            f"the journal would be worn {journal * 1e3:.4g} mm deep {when}, through its radius "
+            f"{c.journal_radius * 1e3:.4g} mm"
+        )
+
 
 def _outside_ranges(jc: object, c: object, row: NDArray[np.float64], duration: float) -> dict:
-    """Per checked assumption of the joint's laws: its limit, the largest value, the time beyond.
-
-    Only the ranges of the laws this joint uses (their records: ``ClearanceTable.law_ranges``).
-    """
+    """``outside_law_ranges`` of the laws this joint uses (their records' ranges)."""
     from ...model.laws.record import ECCENTRICITY, HERTZ_PATCH, PENETRATION
 
     totals = {  # the kernel's totals (time beyond, largest value) of each range a law may have
@@ -241,15 +281,7 @@ def _outside_ranges(jc: object, c: object, row: NDArray[np.float64], duration: f
         HERTZ_PATCH: (jc.T_PATCH_TIME, jc.T_PATCH_MAX),
         ECCENTRICITY: (jc.T_FILM_TIME, jc.T_FILM_MAX),
     }
-    return {
-        name: {
-            "limit": float(limit),
-            "largest": float(row[totals[name][1]]),
-            "time_beyond_s": float(row[totals[name][0]]),
-            "time_fraction_beyond": float(row[totals[name][0]] / duration) if duration else 0.0,
-        }
-        for name, limit in c.law_ranges().items()
-    }
+    return range_report(c.law_ranges(), totals, row, duration)
 
 
 KIND = RevoluteKind()

@@ -1,7 +1,8 @@
 """Figures of the revolute clearance joints: P. Flores, Mech. Mach. Theory 44 (2009), section 6.
 
 Functions ``Results -> matplotlib Figure``, one per figure of the paper (Figs. 7-10), and
-``save_figures`` that writes them all. Angles on a joint surface are measured
+``save_figures`` that writes them all; ``draw_life_profiles`` draws a joint's profiles in a
+life run's figure (``figures.life``). Angles on a joint surface are measured
 counter-clockwise in that surface's body frame from the body's x axis, as in the wear table.
 """
 
@@ -15,6 +16,7 @@ import pandas as pd
 from matplotlib import colormaps
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure  # figures without pyplot: no global backend switch
+from matplotlib.gridspec import SubplotSpec
 
 from ...figures.files import save_pngs
 from ...figures.legends import LEGEND_ROOM, legend_beside
@@ -358,6 +360,31 @@ def plot_wear_profile(results: Results) -> Figure:
         f"{results.model.name}: initial and worn profiles, wear exaggerated{_paper(results, '10')}"
     )
     return fig
+
+
+def draw_life_profiles(
+    fig: Figure, place: SubplotSpec, joint: RevoluteJoint, profiles: pd.DataFrame, updates: dict
+) -> None:
+    """Wear depth per sector of the journal and the bearing, polar, at a few updates.
+
+    ``profiles``: the joint's rows of a life run's profiles.csv; ``updates``: the updates
+    drawn, each with its colour.
+    """
+    unit, per_m = length_unit(profiles["depth_m"])
+    cells = place.subgridspec(1, len(KIND.surfaces))
+    for s, surface in enumerate(KIND.surfaces):
+        ax = fig.add_subplot(cells[0, s], projection="polar")
+        for update, colour in updates.items():
+            rows = profiles[profiles["update"] == update]
+            angle, depth = _profile(rows, joint.name, surface)
+            theta = np.radians(np.append(angle, angle[0]))
+            label = f"{int(rows['cycles'].iloc[0]):,} cycles"
+            ax.plot(theta, np.append(depth, depth[0]) * per_m, color=colour, lw=1.2, label=label)
+        ax.set_rlabel_position(67.5)
+        title = f"{joint.name}: {surface} ({_surface_body(joint, surface)})\nwear depth [{unit}]"
+        ax.set_title(title, fontsize="medium")
+        if s == 0:
+            ax.legend(loc="lower left", bbox_to_anchor=(-0.25, -0.12), fontsize="small")
 
 
 def save_figures(results: Results, folder: str | Path, ideal: Results | None = None) -> list[Path]:

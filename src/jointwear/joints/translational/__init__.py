@@ -6,11 +6,19 @@ have no rows), ``position_m`` the segment's centre along its surface from the su
 in its body's frame (the guide's from the joint's first point, the slider's from its centre,
 positive along the axis). Impact rows: the contact (a corner or a guide edge,
 ``kernels.elements.slider.CONTACT_NAMES``) and where along the guide it is.
+
+Life runs: the clearance growth is that of the worse side, top or bottom, each side's taken
+as its guide surface's deepest segment plus its slider surface's deepest, as if the two met
+wherever they are (at most what the slider can move across its guide, tilted or not, beyond
+the nominal gap; conservative). An unbounded guide keeps no wear map, so there the growth
+is the slider's alone. A slider worn through its height (top and bottom at one segment)
+stops them.
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from types import MappingProxyType
 
 import numpy as np
@@ -23,6 +31,8 @@ from ..kind import (
     ClearanceKind,
     common_figures,
     deepest,
+    range_report,
+    segment_centres,
     stiffness_rows,
 )
 from .schema import TranslationalJoint
@@ -46,11 +56,6 @@ def surfaces(joint: object) -> dict[str, float]:
     return {name: length for name, length in zip(SURFACES, lengths, strict=True) if length}
 
 
-def segment_centres(length: float, segments: int) -> NDArray[np.float64]:
-    """Centres of a surface's segments from its middle [m]."""
-    return (np.arange(segments) + 0.5) * length / segments - 0.5 * length
-
-
 class TranslationalKind(ClearanceKind):
     """A slider in its guide."""
 
@@ -61,6 +66,13 @@ class TranslationalKind(ClearanceKind):
     impact_columns = ("contact", "guide_position_m")
     figures_module = f"{__name__}.figures"
     animation_module = f"{__name__}.animation"
+    references = MappingProxyType({
+        "flores2008translational": (
+            'P. Flores, J. Ambrósio, J.C.P. Claro, H.M. Lankarani, "Translational joints with '
+            'clearance in rigid multibody systems", Journal of Computational and Nonlinear '
+            "Dynamics 3 (2008) 011007"
+        ),
+    })  # fmt: skip
     citations = ("flores2008translational",)  # the model of the contacts
     range_words = MappingProxyType({
         "penetration_over_gap": "penetration / gap",
@@ -71,6 +83,11 @@ class TranslationalKind(ClearanceKind):
     older_state_names = MappingProxyType({field: f"slider_{field}" for field in STATE_FIELDS})
     pins_points = False
     slides = True
+    life_runs = True
+    growth_limit = (
+        "The contact stiffness is that of the nominal corners and the worn profiles enter "
+        "only as depths across the guide"
+    )
     figures = (
         ("slider_motion", "plot_slider_motion"),
         ("slider_corner_forces", "plot_corner_forces"),
@@ -197,32 +214,22 @@ class TranslationalKind(ClearanceKind):
         return (*super().peaks, self.module.T_DEPTH_MAX, self.module.T_PATCH_MAX)
 
     def _outside_ranges(self, c: object, row: NDArray[np.float64], duration: float) -> dict:
-        """Per range of the joint's laws: its limit, the largest value, the time beyond.
+        """The penetration against the gap, and the corner's Hertz half-width against its radius.
 
-        The penetration against the gap; the Hertz half-width of a corner against its radius
-        where ``corner_radius`` is given.
+        The half-width where ``corner_radius`` is given; the entries named for this joint.
         """
         from ...model.laws.record import HERTZ_PATCH, PENETRATION
 
         ks = self.module
-        checks = {PENETRATION: ("penetration_over_gap", ks.T_DEPTH_TIME, ks.T_DEPTH_MAX)}
+        names = {PENETRATION: "penetration_over_gap"}
         if c.corner_radius is not None:
-            checks[HERTZ_PATCH] = (
-                "hertz_half_width_over_corner_radius",
-                ks.T_PATCH_TIME,
-                ks.T_PATCH_MAX,
-            )
-        ranges = c.law_ranges()
-        return {
-            name: {
-                "limit": float(ranges[law_range]),
-                "largest": float(row[largest]),
-                "time_beyond_s": float(row[time]),
-                "time_fraction_beyond": float(row[time] / duration) if duration else 0.0,
-            }
-            for law_range, (name, time, largest) in checks.items()
-            if law_range in ranges
+            names[HERTZ_PATCH] = "hertz_half_width_over_corner_radius"
+        totals = {
+            "penetration_over_gap": (ks.T_DEPTH_TIME, ks.T_DEPTH_MAX),
+            "hertz_half_width_over_corner_radius": (ks.T_PATCH_TIME, ks.T_PATCH_MAX),
         }
+        limits = {names[r]: limit for r, limit in c.law_ranges().items() if r in names}
+        return range_report(limits, totals, row, duration)
 
     @override
     def wear_rows(self, joint: object, wear: NDArray[np.float64]) -> list[tuple]:
@@ -252,7 +259,7 @@ class TranslationalKind(ClearanceKind):
         entry = common_figures(self, totals, duration)
         entry = {
             "type": entry.pop("type"),
-            "gap_m": c.clearance_gap,
+            self.gap_key: c.clearance_gap,
             **entry,
             "outside_law_ranges": self._outside_ranges(c, totals, duration),
         }
@@ -263,6 +270,45 @@ class TranslationalKind(ClearanceKind):
                 None if peak is None else float(segment_centres(length, c.segments)[peak])
             )
         return entry
+
+    @override
+    def mapped_surfaces(self, joint: object) -> tuple[str, ...]:
+        return tuple(surfaces(joint))
+
+    @override
+    def clearance_growth(
+        self, joint: object, wear: NDArray[np.float64], timeseries: Sequence[object]
+    ) -> float:
+        n = joint.clearance.segments
+        deepest = {s: float(wear[SURFACES.index(s), :n].max()) for s in surfaces(joint)}
+        return max(
+            deepest.get(f"guide_{side}", 0.0) + deepest[f"slider_{side}"]
+            for side in ("top", "bottom")
+        )
+
+    @override
+    def worn_volume(self, joint: object, wear: NDArray[np.float64]) -> float:
+        """Depth x segment length x width, summed over the mapped surfaces' segments."""
+        c = joint.clearance
+        return float(
+            sum(
+                wear[SURFACES.index(surface), : c.segments].sum() * length / c.segments
+                for surface, length in surfaces(joint).items()
+            )
+            * c.width
+        )
+
+    @override
+    def worn_through(self, joint: object, wear: NDArray[np.float64], when: str) -> str | None:
+        c = joint.clearance
+        top, bottom = (wear[SURFACES.index(f"slider_{s}"), : c.segments] for s in ("top", "bottom"))
+        depth = float((top + bottom).max())
+        if depth < c.slider_height:
+            return None
+        return (
+            f"the slider would be worn {depth * 1e3:.4g} mm deep, top and bottom together, "
+            f"{when}, through its height {c.slider_height * 1e3:.4g} mm"
+        )
 
 
 KIND = TranslationalKind()

@@ -1,6 +1,7 @@
 """Figures of the translational clearance joints: a slider in a guide with a gap.
 
-Functions ``Results -> matplotlib Figure`` and ``save_figures`` that writes them all.
+Functions ``Results -> matplotlib Figure`` and ``save_figures`` that writes them all;
+``draw_life_profiles`` draws a joint's profiles in a life run's figure (``figures.life``).
 As in the time series (``results.slider``): the lateral offset is the slider centre's from
 the guide's centreline along the guide's normal, the tilt the slider's angle relative to the
 guide's from the initial pose; "front" is the guide's +axis side, "top" its +normal side.
@@ -16,6 +17,7 @@ import numpy as np
 import pandas as pd
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure  # figures without pyplot: no global backend switch
+from matplotlib.gridspec import SubplotSpec
 
 from ...figures.crank import crank_abscissa, set_abscissa
 from ...figures.files import save_pngs
@@ -227,6 +229,42 @@ def plot_guide_wear(results: Results) -> Figure:
     note = f" (unbounded guide of {', '.join(unbounded)}: slider only)" if unbounded else ""
     fig.suptitle(f"{results.model.name}: wear depth at t = {t_end:.4g} s{note}")
     return fig
+
+
+def draw_life_profiles(
+    fig: Figure, place: SubplotSpec, joint: TranslationalJoint, profiles: pd.DataFrame,
+    updates: dict,
+) -> None:  # fmt: skip
+    """Wear depth along the guide's and the slider's surfaces at a few updates.
+
+    Top surfaces solid, bottom ones dashed. ``profiles``: the joint's rows of a life run's
+    profiles.csv; ``updates``: the updates drawn, each with its colour.
+    """
+    unit, per_m = length_unit(profiles["depth_m"])
+    c = joint.clearance
+    cells = place.subgridspec(1, 2)
+    parts = (("guide", c.guide_length, "its middle"), ("slider", c.slider_length, "its centre"))
+    for n, (part, length, origin) in enumerate(parts):
+        ax = fig.add_subplot(cells[0, n])
+        if not length:
+            ax.set_axis_off()
+            note = f"{joint.name}: the guide is unbounded;\nits wear is not mapped"
+            ax.text(0.5, 0.5, note, ha="center", va="center", transform=ax.transAxes)
+            continue
+        for update, colour in updates.items():
+            rows = profiles[profiles["update"] == update]
+            for side, style in (("top", "-"), ("bottom", "--")):
+                position, depth = _depths(rows, joint.name, f"{part}_{side}")
+                label = f"{int(rows['cycles'].iloc[0]):,} cycles" if side == "top" else None
+                ax.plot(position * MM, depth * per_m, ls=style, color=colour, lw=1.2, label=label)
+        ax.set_title(f"{joint.name}: {part} ({joint.bodies[n]}), top solid, bottom dashed")
+        ax.set_xlabel(f"position along the {part} from {origin} [mm]")
+        ax.set_ylabel(f"wear depth [{unit}]")
+        ax.set_xlim(-0.5 * length * MM, 0.5 * length * MM)
+        ax.set_ylim(bottom=0.0)
+        ax.grid(alpha=0.3)
+        if n == 1:
+            ax.legend(fontsize="small")
 
 
 def save_figures(results: Results, folder: str | Path) -> list[Path]:

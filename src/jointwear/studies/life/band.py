@@ -31,18 +31,18 @@ simulations: there the band holds the growth of some of them only (docs/benchmar
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from pathlib import Path
 
 import numpy as np
 import pandas as pd
 
+from ...joints import ClearanceKind
 from ...model import Model
-from .records import GROWTH_MARK, cycles_at
+from .records import GROWTH_MARK, cycles_at, depth_keys, life_joints
 
 BAND = ("0.5%", "1%")  # the companions of the default max_change "0.25%": twice, four times it
 FOLDER = "band"  # the companions' life folders, band/<bound>/
-BANDED = ("clearance_growth_m", "max_wear_depth_bearing_m", "max_wear_depth_journal_m")
 ENDED = ("success", "clearance_limit", "worn_through")  # runs whose tables count in the band
 
 
@@ -59,11 +59,20 @@ def run_band(
     return {str(bound): run_one(bound, folder / FOLDER / folder_name(bound)) for bound in bounds}
 
 
+def banded(model: Model) -> Iterator[tuple[ClearanceKind, object, list[str]]]:
+    """(kind, joint, keys) of every clearance joint: the life.csv figures the band is of.
+
+    The clearance growth, and the deepest cell of each mapped surface.
+    """
+    for kind, _, joint in life_joints(model):
+        yield kind, joint, ["clearance_growth_m", *depth_keys(kind, joint)]
+
+
 def band_columns(model: Model) -> list[str]:
     """The columns of life_band.csv, in order."""
     columns = ["cycles", "runs"]
-    for joint in model.joints_of("revolute"):
-        for key in BANDED:
+    for _, joint, keys in banded(model):
+        for key in keys:
             stem = key.removesuffix("_m")
             columns += [f"{joint.name}.{key}", f"{joint.name}.{stem}_low_m"]
             columns += [f"{joint.name}.{stem}_high_m"]
@@ -97,8 +106,8 @@ def band_table(
     cycles = cycles[(cycles >= value["cycles"].iloc[0]) & (cycles <= value["cycles"].iloc[-1])]
     reached = [np.isfinite(_curve(t, "cycles", cycles)) for t in tables]
     data: dict[str, np.ndarray] = {"cycles": cycles, "runs": 1 + np.sum(reached, axis=0)}
-    for joint in model.joints_of("revolute"):
-        for key in BANDED:
+    for _, joint, keys in banded(model):
+        for key in keys:
             column = f"{joint.name}.{key}"
             centre = _curve(value, column, cycles)
             apart = [np.abs(_curve(t, column, cycles) - centre) for t in tables]
@@ -158,7 +167,7 @@ def band_summary(
         ``band`` (how it was made, the runs, and ``at_cycles``: the cycle count at which the
         end-of-run figures are compared, the fewest any run reached) and, per joint,
         ``{value, low, high}`` of the cycles to 50 % clearance growth and of the clearance
-        growth and the deepest sectors at ``at_cycles``.
+        growth and the deepest cells at ``at_cycles``.
     """
     tables = [t for t in companions.values() if len(t)]
     ends = [int(t["cycles"].iloc[-1]) for t in [value, *tables] if len(t)]
@@ -172,8 +181,8 @@ def band_summary(
     joints: dict[str, dict] = {}
     if not len(value):
         return top, joints
-    for joint in model.joints_of("revolute"):
-        mark = GROWTH_MARK * joint.clearance.radial_clearance
+    for kind, joint, keys in banded(model):
+        mark = GROWTH_MARK * kind.gap(joint)
         column = f"{joint.name}.clearance_growth_m"
         crossings = [(cycles_at(t["cycles"], t[column], mark), t) for t in tables]
         known = [at for at, t in crossings if at is not None or t["cycles"].iloc[-1] >= cycles]
@@ -182,7 +191,7 @@ def band_summary(
                 cycles_at(value["cycles"], value[column], mark), known
             )
         }
-        for key in BANDED:
+        for key in keys:
             column = f"{joint.name}.{key}"
             entry[key] = spread(_at(value, column, at), [_at(t, column, at) for t in tables])
         joints[joint.name] = entry

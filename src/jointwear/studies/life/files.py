@@ -30,7 +30,6 @@ FIGURES = "figures"
 FIGURE_FILES = ("life_wear.png", "life_profiles.png")  # what figures.life writes there
 CHECKPOINTS = "checkpoint"
 CHECKPOINT = "checkpoint.json"
-PROFILE_COLUMNS = ["update", "cycles", "joint", "surface", "sector", "angle_deg", "depth_m"]
 FILES = (  # the fixed names a life run writes, for ``jointwear.io.claim``
     TABLE, PROFILES, SUMMARY, BAND_TABLE, MODEL, f"{CHECKPOINTS}/{CHECKPOINT}",
     *(f"{FIGURES}/{name}" for name in FIGURE_FILES),
@@ -62,10 +61,13 @@ class Checkpoint:
     state: RunState | None
 
 
-def start_folder(folder: Path, columns: list[str], record: dict) -> None:
+def start_folder(
+    folder: Path, columns: list[str], profile_columns: list[str], record: dict
+) -> None:
     """Make ``folder`` a fresh life-run folder: earlier outputs removed, empty tables, model.
 
-    ``record`` (settings and resolved model) is kept in the checkpoint, for ``--resume``.
+    ``columns`` and ``profile_columns``: those of life.csv and profiles.csv; ``record``
+    (settings and resolved model) is kept in the checkpoint, for ``--resume``.
     """
     check_folder(folder)
     claim(folder, FILES)
@@ -78,7 +80,7 @@ def start_folder(folder: Path, columns: list[str], record: dict) -> None:
     for old in (folder / CHECKPOINTS).glob("state_*.npz"):
         remove(old)
     _write_rows(folder / TABLE, columns, [])
-    _write_rows(folder / PROFILES, PROFILE_COLUMNS, [])
+    _write_rows(folder / PROFILES, profile_columns, [])
     write_text(folder / MODEL, json.dumps(record["model"], indent=2))
     save_checkpoint(folder, Checkpoint(0, 0, 0, 0.0, None), record)
 

@@ -1,107 +1,66 @@
 """What a long-life wear run records after every update, and its summary.
 
-The effective clearance growth of a joint is the largest increase of the gap between journal
-and bearing over every direction, at every relative orientation the two bodies pass through
-in the measured cycles: with psi the journal body's angle relative to the bearing body's,
-the gap in the direction at angle theta of the bearing's frame grows by
-``w_B(theta) + w_J(theta - psi)`` (the worn profiles interpolated as the contact model does,
-``kernels.laws.wear.depth_at``), maximised over theta and over psi between its smallest and largest
-value in the measured cycles (psi is continuous, so it takes every value in between). When
-the bodies turn fully relative to each other it is the sum of the two deepest sectors.
+Every clearance joint of a kind that life runs support (``ClearanceKind.life_runs``) is
+recorded alike: per mapped surface its deepest cell, the effective clearance growth (the
+kind's measure, ``ClearanceKind.clearance_growth``), the volume the profiles hold, the
+largest wear per cycle and the peak contact force.
 """
 
 from __future__ import annotations
 
-import math
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
 
 import numpy as np
 import pandas as pd
 from numpy.typing import NDArray
 
 from ..._version import __version__
-from ...joints.revolute import SURFACES
-from ...joints.revolute.schema import RevoluteJoint
+from ...joints import KINDS, ClearanceKind
+from ...joints.kind import deepest
 from ...model import Model
 from ...results import Results
-from ...results.clearance import wear_table
+from ...results.clearance import wear_columns, wear_table
 
-GRID_CELLS = 2**20  # evaluations per block of the clearance-growth search
 GROWTH_MARK = 0.5  # the summary reports the cycles at which the growth reached this share of c
+Profiles = dict[str, NDArray[np.float64]]  # per joint type, (joints, surfaces, cells) [m]
 
 
-def relative_angle_range(joint: RevoluteJoint, runs: Sequence[Results]) -> tuple[float, float]:
-    """Smallest and largest angle psi [rad] of the journal's body relative to the bearing's.
-
-    Over the output rows of ``runs``.
-    """
-    psi = np.concatenate(
-        [
-            _angle(r.timeseries, joint.bodies[1]) - _angle(r.timeseries, joint.bodies[0])
-            for r in runs
-        ]
-    )
-    return float(psi.min()), float(psi.max())
+def life_joints(model: Model) -> Iterator[tuple[ClearanceKind, int, object]]:
+    """(kind, index among the kind's, joint) of every clearance joint, registry then file order."""
+    for kind in KINDS:
+        for k, joint in enumerate(kind.joints(model)):
+            yield kind, k, joint
 
 
-def _angle(timeseries: pd.DataFrame, body: str) -> NDArray[np.float64]:
-    if body == "ground":
-        return np.zeros(len(timeseries))
-    return timeseries[f"phi_{body}"].to_numpy()
+def cells(kind: ClearanceKind, joint: object, values: NDArray[np.float64]) -> NDArray[np.float64]:
+    """The joint's mapped cells of ``values`` (an array shaped as its wear), flat."""
+    return np.array([row[3] for row in kind.wear_rows(joint, values)])
 
 
-def clearance_growth(
-    bearing: NDArray[np.float64], journal: NDArray[np.float64], psi: tuple[float, float]
-) -> float:
-    """Largest gap increase [m] over directions and relative angles ``psi`` (module docstring).
-
-    Parameters
-    ----------
-    bearing, journal
-        Sector depths of the two surfaces [m], the same number of sectors.
-    psi
-        Smallest and largest relative angle of the journal's body [rad].
-    """
-    lo, hi = psi
-    if hi - lo >= 2.0 * math.pi:
-        return float(bearing.max() + journal.max())
-    n = bearing.shape[0]
-    sector = 2.0 * math.pi / n
-    centres = (np.arange(n) + 0.5) * sector
-    # In (theta, phi = theta - psi) the sum is linear on every cell between sector centres,
-    # so its largest value on the strip lo <= psi <= hi lies on a vertex of a cell cut by
-    # the strip: a pair of centres (psi a whole number of sectors) or a cell edge on the
-    # strip's border (psi = lo or hi). For each such psi, it lies on a centre of either
-    # surface.
-    psis = np.concatenate([[lo, hi], np.arange(math.ceil(lo / sector), hi / sector) * sector])
-    largest = 0.0
-    for block in np.array_split(psis, math.ceil(psis.size * 2 * n / GRID_CELLS)):
-        theta = np.concatenate(
-            [np.broadcast_to(centres, (block.size, n)), centres + block[:, None]], 1
-        )
-        gap = np.interp(theta, centres, bearing, period=2.0 * math.pi)
-        gap += np.interp(theta - block[:, None], centres, journal, period=2.0 * math.pi)
-        largest = max(largest, float(gap.max()))
-    return largest
+def deepest_cells(
+    kind: ClearanceKind, joint: object, wear: NDArray[np.float64]
+) -> dict[str, tuple[float, object]]:
+    """Per mapped surface: its deepest cell's depth [m] and position (None if unworn)."""
+    rows = kind.wear_rows(joint, wear)
+    found = {}
+    for surface in kind.mapped_surfaces(joint):
+        mine = [row for row in rows if row[0] == surface]
+        depth, peak = deepest(np.array([row[3] for row in mine]))
+        found[surface] = (depth, None if peak is None else float(mine[peak][2]))
+    return found
 
 
 def clearance_growths(
-    model: Model, wear: NDArray[np.float64], psi: Sequence[tuple[float, float]]
-) -> NDArray[np.float64]:
-    """Effective clearance growth [m] of every clearance joint, for profiles ``wear``."""
-    growths = []
-    for k, joint in enumerate(model.joints_of("revolute")):
-        n = joint.clearance.sectors
-        growths.append(clearance_growth(wear[k, 0, :n], wear[k, 1, :n], psi[k]))
-    return np.array(growths)
+    model: Model, wear: Profiles, timeseries: Sequence[pd.DataFrame]
+) -> dict[str, float]:
+    """Effective clearance growth [m] of every clearance joint by name, for profiles ``wear``.
 
-
-def worn_volume(joint: RevoluteJoint, wear: NDArray[np.float64]) -> float:
-    """Volume [m^3] the profiles ``wear[surface, sector]`` hold: depth x R x 2 pi / N x L."""
-    c = joint.clearance
-    arc = 2.0 * math.pi / c.sectors * c.width
-    bearing, journal = wear[0, : c.sectors].sum(), wear[1, : c.sectors].sum()
-    return float((bearing * c.bearing_radius + journal * c.journal_radius) * arc)
+    ``timeseries``: the measured cycles, whose motion the growth is judged at.
+    """
+    return {
+        joint.name: kind.clearance_growth(joint, wear[kind.name][k], timeseries)
+        for kind, k, joint in life_joints(model)
+    }
 
 
 def driver_columns(model: Model, driver: str) -> tuple[str, str]:
@@ -115,17 +74,26 @@ def driver_columns(model: Model, driver: str) -> tuple[str, str]:
     return f"force_{driver}", f"force_range_{driver}_n"
 
 
+def depth_keys(kind: ClearanceKind, joint: object) -> list[str]:
+    """The keys of the joint's deepest cell per mapped surface, ``max_wear_depth_<surface>_m``."""
+    return [f"max_wear_depth_{surface}_m" for surface in kind.mapped_surfaces(joint)]
+
+
 def table_columns(model: Model, driver: str) -> list[str]:
     """The columns of life.csv, in order."""
     columns = ["update", "cycles", "simulated_cycles", "extrapolated_cycles", "steady"]
-    for joint in model.joints_of("revolute"):
-        columns += [f"{joint.name}.{key}" for key in _JOINT_KEYS]
+    for kind, _, joint in life_joints(model):
+        keys = [*depth_keys(kind, joint), *_JOINT_KEYS]
+        columns += [f"{joint.name}.{key}" for key in keys]
     return [*columns, driver_columns(model, driver)[1], "wall_s"]
 
 
+def profile_columns(model: Model) -> list[str]:
+    """The columns of profiles.csv: the wear table's, after the update and its cycles."""
+    return ["update", "cycles", *wear_columns(model)]
+
+
 _JOINT_KEYS = (
-    "max_wear_depth_bearing_m",
-    "max_wear_depth_journal_m",
     "clearance_growth_m",
     "worn_volume_m3",
     "wear_rate_m_per_cycle",
@@ -137,9 +105,9 @@ def update_row(
     model: Model,
     driver: str,
     counts: tuple[int, int, int, int, int],
-    wear: NDArray[np.float64],
-    rate: NDArray[np.float64],
-    growth: NDArray[np.float64],
+    wear: Profiles,
+    rate: Profiles,
+    growth: dict[str, float],
     runs: Sequence[Results],
     wall_s: float,
 ) -> list:
@@ -153,25 +121,24 @@ def update_row(
         Update number, cycles so far, cycles simulated so far, cycles extrapolated by it,
         and 1 if the measured cycles were steady (else 0).
     wear
-        The profiles after the update [m], (joints, 2, sectors).
+        The profiles after the update [m].
     rate
         Wear per cycle of the update's measured cycles [m].
     growth
-        Effective clearance growth of each joint with ``wear`` [m].
+        Effective clearance growth of each joint with ``wear`` [m], by name.
     runs
         The update's measured cycles (contact forces and driver torque).
     wall_s
         Wall time of the whole run so far [s].
     """
     row: list = list(counts)
-    for k, joint in enumerate(model.joints_of("revolute")):
-        n = joint.clearance.sectors
+    for kind, k, joint in life_joints(model):
+        mine = wear[kind.name][k]
+        row += [depth for depth, _ in deepest_cells(kind, joint, mine).values()]
         row += [
-            float(wear[k, 0, :n].max()),
-            float(wear[k, 1, :n].max()),
-            float(growth[k]),
-            worn_volume(joint, wear[k]),
-            float(rate[k, :, :n].max()),
+            growth[joint.name],
+            kind.worn_volume(joint, mine),
+            float(cells(kind, joint, rate[kind.name][k]).max()),
             max(r.summary["clearance_joints"][joint.name]["max_contact_force_n"] for r in runs),
         ]
     column = driver_columns(model, driver)[0]
@@ -179,9 +146,9 @@ def update_row(
     return [*row, float(torque.max() - torque.min()), wall_s]
 
 
-def profile_rows(model: Model, update: int, cycles: int, wear: NDArray[np.float64]) -> list[list]:
-    """Rows of profiles.csv: ``update, cycles, joint, surface, sector, angle_deg, depth_m``."""
-    table = wear_table(model, {"revolute": wear})
+def profile_rows(model: Model, update: int, cycles: int, wear: Profiles) -> list[list]:
+    """Rows of profiles.csv, in the order of ``profile_columns``."""
+    table = wear_table(model, wear)
     return [[update, cycles, *row] for row in table.itertuples(index=False, name=None)]
 
 
@@ -201,7 +168,7 @@ def cycles_at(cycles: pd.Series, values: pd.Series, level: float) -> float | Non
 def life_summary(
     model: Model,
     table: pd.DataFrame,
-    wear: NDArray[np.float64] | None,
+    wear: Profiles | None,
     outcome: dict,
 ) -> dict:
     """``summary.json`` of a life run.
@@ -228,25 +195,24 @@ def life_summary(
         "unsteady_updates": int((table["steady"] == 0).sum()),
     }
     joints = {}
-    for k, joint in enumerate(model.joints_of("revolute")):
-        c = joint.clearance.radial_clearance
-        entry: dict[str, float | None] = {"radial_clearance_m": c}
+    for kind, k, joint in life_joints(model):
+        c = kind.gap(joint)
+        entry: dict[str, object] = {"type": kind.name, kind.gap_key: c}
         if last is not None:
-            for key in ("max_wear_depth_bearing_m", "max_wear_depth_journal_m"):
-                entry[key] = float(last[f"{joint.name}.{key}"])
-            growth = float(last[f"{joint.name}.clearance_growth_m"])
+            name = joint.name
+            for key in depth_keys(kind, joint):
+                entry[key] = float(last[f"{name}.{key}"])
+            growth = float(last[f"{name}.clearance_growth_m"])
             entry["clearance_growth_m"] = growth
             entry["clearance_growth_fraction"] = growth / c
-            entry["worn_volume_m3"] = float(last[f"{joint.name}.worn_volume_m3"])
-            entry["max_contact_force_n"] = float(table[f"{joint.name}.max_contact_force_n"].max())
+            entry["worn_volume_m3"] = float(last[f"{name}.worn_volume_m3"])
+            entry["max_contact_force_n"] = float(table[f"{name}.max_contact_force_n"].max())
             entry["cycles_to_clearance_growth_50pct"] = cycles_at(
-                table["cycles"], table[f"{joint.name}.clearance_growth_m"], GROWTH_MARK * c
+                table["cycles"], table[f"{name}.clearance_growth_m"], GROWTH_MARK * c
             )
-            for s, surface in enumerate(SURFACES):
-                depths = wear[k, s, : joint.clearance.sectors]
-                peak = int(np.argmax(depths))
-                angle = (peak + 0.5) * 360.0 / depths.shape[0]
-                entry[f"max_wear_angle_{surface}_deg"] = angle if depths[peak] > 0 else None
+            where, unit = kind.wear_position.rsplit("_", 1)  # angle_deg, position_m
+            for surface, (_, place) in deepest_cells(kind, joint, wear[kind.name][k]).items():
+                entry[f"max_wear_{where}_{surface}_{unit}"] = place
         joints[joint.name] = entry
     summary["clearance_joints"] = joints
     return summary

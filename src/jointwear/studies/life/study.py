@@ -16,10 +16,10 @@ multibody systems with revolute joint wear", Wear 268 (2010) 643-652, a life run
    not settle, the motion is taken as chaotic and the mean wear of their second half (past
    the transient) as the wear of one cycle;
 3. extrapolates it over as many further cycles as keep the largest depth the update (its
-   simulated and extrapolated cycles) adds to any sector of any surface within
+   simulated and extrapolated cycles) adds to any cell of any surface within
    ``max_change`` (a depth, or a share of the joint's current clearance, nominal plus
-   growth), never past ``cycles`` in all; both surfaces' profiles
-   are updated, and the next run starts from the last state with them (``RunState.with_wear``);
+   growth), never past ``cycles`` in all; every surface's profile is updated, and the next
+   run starts from the last state with them (``RunState.with_wear``);
 4. repeats 2-3 until ``cycles`` cycles are done.
 
 Then, unless ``band`` is empty, the same life run at each bound of ``band`` (``band``): the
@@ -28,12 +28,16 @@ spread of these runs around the one at ``max_change`` is the prediction's uncert
 A cycle is the period of the model's drivers (an angle driver at constant speed: 2 pi /
 speed; a harmonic function: 2 pi / angular frequency). The run stops early, with its status
 and a message, if a simulated run fails or is interrupted (Ctrl-C, SIGTERM: the update in
-progress is lost, nothing else), if a journal would be worn through, or if a joint's
-effective clearance (``records``) would grow by more than ``max_growth`` times its
-nominal clearance (default 1: doubled): the contact stiffness and the Hertz patch are
-computed from the nominal radii, and the worn profile enters the contact only as a radial
-depth (its slope neglected), so well past the nominal clearance the model no longer
-describes the joint.
+progress is lost, nothing else), if a part would be worn through (a journal through its
+radius, a slider through its height: ``ClearanceKind.worn_through``), or if a joint's
+effective clearance (``ClearanceKind.clearance_growth``) would grow by more than
+``max_growth`` times its nominal clearance (default 1: doubled): the contact stiffness is
+computed from the nominal geometry, and the worn profile enters the contact only as a depth
+(its slope neglected), so well past the nominal clearance the model no longer describes the
+joint.
+
+Every joint type whose kind supports life runs (``ClearanceKind.life_runs``: revolute and
+translational) is extrapolated alike, its profiles per joint type in ``RunState.wear``.
 """
 
 from __future__ import annotations
@@ -52,7 +56,7 @@ from ...results.run_state import RunState
 from . import files
 from .band import BAND, band_summary, band_table, folder_name, run_band
 from .band import FOLDER as BAND_FOLDER
-from .records import life_summary, table_columns
+from .records import life_joints, life_summary, profile_columns, table_columns
 from .settings import LifeSettings, cycle_driver, with_feedback
 from .update import RESUME, LifeRun
 
@@ -190,12 +194,14 @@ def life(
         driver, period = cycle_driver(model)
     except ModelError as error:
         problems += error.problems
-    if not model.joints_of("revolute"):
-        problems.append("joints: a life run needs a revolute clearance joint ([joints.clearance])")
+    joints = [(kind, joint) for kind, _, joint in life_joints(model)]
+    if not joints:
+        problems.append("joints: a life run needs a clearance joint ([joints.clearance])")
     problems += [
-        f"joints.{joint.name}: a life run extrapolates the wear of revolute clearance joints "
-        "only; run a translational joint with clearance with `jointwear run`"
-        for joint in model.joints_of("translational")
+        f"joints.{joint.name}: life runs do not support {kind.name} clearance joints yet; "
+        "run it with `jointwear run`"
+        for kind, joint in joints
+        if not kind.life_runs
     ]
     if problems:
         raise ModelError(problems)
@@ -204,7 +210,8 @@ def life(
     if resume:
         point = files.load_checkpoint(folder, record)
     else:
-        files.start_folder(folder, table_columns(model, driver), record)
+        columns = (table_columns(model, driver), profile_columns(model))
+        files.start_folder(folder, *columns, record)
         point = files.Checkpoint(0, 0, 0, 0.0, None)
     total = cycles * (1 + len(bounds))
     with stop_requests() as stop:
@@ -217,7 +224,7 @@ def life(
                 run.stop(INTERRUPTED, f"interrupted at {point.cycles} cycles{RESUME}")
     with stop_requests():  # the folder is completed whatever comes now
         table, profiles = files.read_tables(folder)
-        wear = None if point.state is None else point.state.wear["revolute"]
+        wear = None if point.state is None else point.state.wear
         outcome = {
             "status": run.status,
             "message": run.message,

@@ -11,7 +11,6 @@ import time
 from pathlib import Path
 
 import numpy as np
-from numpy.typing import NDArray
 
 from ...engine.simulate import simulate
 from ...engine.status import CLEARANCE_LIMIT, FAILED, INTERRUPTED, SUCCESS, WORN_THROUGH
@@ -20,12 +19,7 @@ from ...results import Results
 from ...results.clearance import UM
 from ...results.run_state import RunState
 from . import files
-from .records import (
-    clearance_growths,
-    profile_rows,
-    relative_angle_range,
-    update_row,
-)
+from .records import Profiles, cells, clearance_growths, life_joints, profile_rows, update_row
 from .settings import LifeSettings
 
 RESUME = "; --resume (resume=True) goes on from there"
@@ -86,7 +80,8 @@ class LifeRun:
             if settled is None:
                 return point
             runs = measured = [settled]
-            rate, steady = settled.final.wear["revolute"] / simulated, True
+            rate = {kind: wear / simulated for kind, wear in settled.final.wear.items()}
+            steady = True
         else:
             outcome = self._measure(point, left)
             if outcome is None:
@@ -94,16 +89,14 @@ class LifeRun:
             runs, measured, rate, steady = outcome
             simulated = len(runs)
         final = runs[-1].final
-        psi = [relative_angle_range(joint, measured) for joint in model.joints_of("revolute")]
+        motion = [r.timeseries for r in measured]
         extra = 0
         if settings.extrapolate and not settling:
-            growth = clearance_growths(model, final.wear["revolute"], psi)
-            done = final.wear["revolute"] - (
-                0.0 if point.state is None else point.state.wear["revolute"]
-            )
+            growth = clearance_growths(model, final.wear, motion)
+            done = _wear_since(final, point.state)
             extra = self._extrapolated_cycles(rate, done, growth, left - simulated)
-        wear = final.wear["revolute"] + extra * rate
-        growth = clearance_growths(model, wear, psi)
+        wear = {kind: final.wear[kind] + extra * rate[kind] for kind in final.wear}
+        growth = clearance_growths(model, wear, motion)
         cycles = point.cycles + simulated + extra
         if self._past_limit(wear, growth, point.cycles, cycles):
             return point
@@ -112,13 +105,13 @@ class LifeRun:
         wall = self.wall()
         row = update_row(model, self.driver, counts, wear, rate, growth, measured, wall)
         files.append_update(self.folder, row, profile_rows(model, update, cycles, wear))
-        new = files.Checkpoint(update, cycles, counts[2], wall, final.with_wear({"revolute": wear}))
+        new = files.Checkpoint(update, cycles, counts[2], wall, final.with_wear(wear))
         files.save_checkpoint(self.folder, new, self.record)
         return new
 
     def _measure(
         self, point: files.Checkpoint, left: int
-    ) -> tuple[list[Results], list[Results], NDArray[np.float64], bool] | None:
+    ) -> tuple[list[Results], list[Results], Profiles, bool] | None:
         """Simulate cycle by cycle until the wear per cycle is steady.
 
         Without extrapolation ``measure_cycles`` cycles. With it, until the mean wear of the
@@ -128,9 +121,10 @@ class LifeRun:
         Returns
         -------
         tuple or None
-            The runs (one per cycle), those measured, the wear per cycle [m] (their mean),
-            and whether it was steady (False after ``max_update_cycles``: then the second
-            half of the runs is measured); None if a run failed or was interrupted.
+            The runs (one per cycle), those measured, the wear per cycle [m] (their mean,
+            per joint type), and whether it was steady (False after ``max_update_cycles``:
+            then the second half of the runs is measured); None if a run failed or was
+            interrupted.
         """
         settings = self.settings
         most = settings.max_update_cycles if settings.extrapolate else settings.measure_cycles
@@ -139,35 +133,30 @@ class LifeRun:
             results = self._simulate(point, state, len(runs), 1)
             if results is None:
                 return None
-            start = (
-                np.zeros_like(results.final.wear["revolute"])
-                if state is None
-                else state.wear["revolute"]
-            )
-            rates.append(results.final.wear["revolute"] - start)
+            rates.append(_wear_since(results.final, state))
             runs.append(results)
             state = results.final
             if not settings.extrapolate:
                 continue
             m = settings.measure_cycles
             if len(runs) >= 2 * m:
-                last = np.mean(rates[-m:], axis=0)
-                if self._steady(np.mean(rates[-2 * m : -m], axis=0), last):
+                last = _mean(rates[-m:])
+                if self._steady(_mean(rates[-2 * m : -m]), last):
                     return runs, runs[-m:], last, True
         if not settings.extrapolate:
-            return runs, runs, np.mean(rates, axis=0), True
+            return runs, runs, _mean(rates), True
         unsettled = len(runs) == most  # not for want of cycles left
         # A motion that does not settle (a chaotic one) wears at its long-run mean: that of
         # the update's second half, past the transient the jump in the profiles started.
         first = len(runs) // 2 if unsettled else min(1, len(runs) - 1)
-        return runs, runs[first:], np.mean(rates[first:], axis=0), not unsettled
+        return runs, runs[first:], _mean(rates[first:]), not unsettled
 
-    def _steady(self, before: NDArray[np.float64], last: NDArray[np.float64]) -> bool:
-        """Whether two wears per cycle agree, sector by sector, to ``steady_tolerance``."""
-        for k, joint in enumerate(self.model.joints_of("revolute")):
-            n = joint.clearance.sectors
-            change = np.abs(last[k, :, :n] - before[k, :, :n]).max()
-            if change > self.settings.steady_tolerance * last[k, :, :n].max():
+    def _steady(self, before: Profiles, last: Profiles) -> bool:
+        """Whether two wears per cycle agree, cell by cell, to ``steady_tolerance``."""
+        for kind, k, joint in life_joints(self.model):
+            then = cells(kind, joint, before[kind.name][k])
+            now = cells(kind, joint, last[kind.name][k])
+            if np.abs(now - then).max() > self.settings.steady_tolerance * now.max():
                 return False
         return True
 
@@ -205,54 +194,56 @@ class LifeRun:
         return self.model.model_copy(update={"solver": solver})
 
     def _extrapolated_cycles(
-        self,
-        rate: NDArray[np.float64],
-        done: NDArray[np.float64],
-        growth: NDArray[np.float64],
-        left: int,
+        self, rate: Profiles, done: Profiles, growth: dict[str, float], left: int
     ) -> int:
         """Cycles over which ``rate`` may be extrapolated, ``left`` at most.
 
-        No sector may change by more than ``max_change`` in the whole update: the depth
+        No cell may change by more than ``max_change`` in the whole update: the depth
         ``done`` [m] its simulated cycles wore, plus the extrapolated cycles times ``rate``
         [m/cycle].
         """
         extra = left
-        for k, joint in enumerate(self.model.joints_of("revolute")):
-            n = joint.clearance.sectors
-            bound = self.settings.change_bound(joint.clearance.radial_clearance + growth[k])
-            wearing = rate[k, :, :n] > 0.0
+        for kind, k, joint in life_joints(self.model):
+            bound = self.settings.change_bound(kind.gap(joint) + growth[joint.name])
+            per_cycle = cells(kind, joint, rate[kind.name][k])
+            wearing = per_cycle > 0.0
             if wearing.any():
-                room = (bound - done[k, :, :n][wearing]) / rate[k, :, :n][wearing]
+                worn = cells(kind, joint, done[kind.name][k])
+                room = (bound - worn[wearing]) / per_cycle[wearing]
                 extra = min(extra, max(0, math.floor(room.min())))
         return extra
 
     def _past_limit(
-        self, wear: NDArray[np.float64], growth: NDArray[np.float64], before: int, after: int
+        self, wear: Profiles, growth: dict[str, float], before: int, after: int
     ) -> bool:
         """Stop if profiles ``wear`` pass a limit (``study.life``); True if so."""
-        for k, joint in enumerate(self.model.joints_of("revolute")):
-            c = joint.clearance
-            journal = wear[k, 1, : c.sectors].max()
-            if journal >= c.journal_radius:
-                self.stop(
-                    WORN_THROUGH,
-                    f"{joint.name}: the journal would be worn {journal * 1e3:.4g} mm deep "
-                    f"between cycles {before} and {after}, through its radius "
-                    f"{c.journal_radius * 1e3:.4g} mm",
-                )
+        for kind, k, joint in life_joints(self.model):
+            span = f"between cycles {before} and {after}"
+            problem = kind.worn_through(joint, wear[kind.name][k], span)
+            if problem is not None:
+                self.stop(WORN_THROUGH, f"{joint.name}: {problem}")
                 return True
-            limit = self.settings.max_growth * c.radial_clearance
-            if growth[k] > limit:
+            c, grown = kind.gap(joint), growth[joint.name]
+            if grown > self.settings.max_growth * c:
                 self.stop(
                     CLEARANCE_LIMIT,
-                    f"{joint.name}: the effective clearance would grow by {growth[k] * UM:.4g} "
-                    f"µm, {growth[k] / c.radial_clearance:.0%} of the nominal "
-                    f"{c.radial_clearance * UM:.4g} µm, between cycles {before} and {after}: "
-                    f"past max_growth {self.settings.max_growth:g}. The contact stiffness and "
-                    "Hertz patch are those of the nominal radii and the worn profile enters "
-                    "only radially, so the model would no longer describe the joint (resume "
-                    "with a larger max_growth to go on regardless)",
+                    f"{joint.name}: the effective clearance would grow by {grown * UM:.4g} "
+                    f"µm, {grown / c:.0%} of the nominal {c * UM:.4g} µm, {span}: past "
+                    f"max_growth {self.settings.max_growth:g}. {kind.growth_limit}, so the "
+                    "model would no longer describe the joint (resume with a larger max_growth "
+                    "to go on regardless)",
                 )
                 return True
         return False
+
+
+def _wear_since(final: RunState, start: RunState | None) -> Profiles:
+    """The depths [m] worn from ``start`` (None: unworn) to ``final``, per joint type."""
+    if start is None:
+        return {kind: wear.copy() for kind, wear in final.wear.items()}
+    return {kind: wear - start.wear[kind] for kind, wear in final.wear.items()}
+
+
+def _mean(rates: list[Profiles]) -> Profiles:
+    """The mean of wears per cycle [m], per joint type."""
+    return {kind: np.mean([r[kind] for r in rates], axis=0) for kind in rates[0]}
