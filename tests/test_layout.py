@@ -16,6 +16,7 @@ FORBIDDEN = {  # folder: what its modules must not import at module level
               "jointwear.figures", "jointwear.studies", "jointwear.cli"),
     "results": ("jointwear.figures", "jointwear.studies", "jointwear.cli"),
     "engine": ("jointwear.figures", "jointwear.studies", "jointwear.cli"),
+    "figures": ("jointwear.studies", "jointwear.cli"),  # figures take tables, not studies
     "mechanism": ("jointwear.engine", "jointwear.results", "jointwear.figures",
                   "jointwear.studies", "jointwear.cli"),
 }  # fmt: skip

@@ -16,8 +16,8 @@ from pathlib import Path
 import pandas as pd
 import pytest
 
+from jointwear.results.cycles import cycles_at
 from jointwear.studies.life.band import band_columns, spread
-from jointwear.studies.life.records import cycles_at
 from jointwear.studies.life.study import life
 
 ROOT = Path(__file__).parents[1]

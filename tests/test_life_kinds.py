@@ -23,7 +23,7 @@ import jointwear as jw
 from jointwear.cli import app
 from jointwear.joints.translational import KIND, SURFACES
 from jointwear.model import parse_model
-from jointwear.studies.life.records import cycles_at
+from jointwear.results.cycles import cycles_at
 from jointwear.studies.life.study import life
 
 ROOT = Path(__file__).parents[1]

@@ -19,11 +19,12 @@ import pandas as pd
 from matplotlib import colormaps
 from matplotlib.figure import Figure  # figures without pyplot: no global backend switch
 
+from ..joints import joints_by_kind
 from ..model import Model
-from ..studies.life.files import FIGURE_FILES
-from ..studies.life.records import GROWTH_MARK, cycles_at, driver_columns, life_joints
+from ..results.cycles import cycles_at
 from .files import save_png
 from .legends import LEGEND_ROOM, legend_beside
+from .names import LIFE_FIGURES
 from .scaling import length_unit
 
 PROFILE_COUNTS = 5  # profiles drawn: at about 1/5, 2/5, ... of the cycles reached
@@ -36,18 +37,22 @@ def plot_life_wear(
     driver: str,
     band: pd.DataFrame | None = None,
     marks: dict | None = None,
+    *,
+    growth_mark: float,
+    range_column: str,
 ) -> Figure:
     """Wear depth and clearance growth, peak contact force [kN], torque range, vs cycles.
 
     ``band`` (life_band.csv) shades the clearance growth's band; ``marks`` (the summary's
-    ``clearance_joints``) gives the band of the cycles to 50 % growth for the annotation.
+    ``clearance_joints``) gives the band of the cycles to the growth of ``growth_mark`` of
+    the gap for the annotation; ``range_column``: the table's column of the driver's range.
     """
     fig = Figure(figsize=(8.0 + LEGEND_ROOM, 9.0), layout="constrained")
     depth, force, torque = fig.subplots(3, 1, sharex=True)
     cycles = table["cycles"].to_numpy()
     lengths = [c for c in table if ".max_wear_depth_" in c or c.endswith(".clearance_growth_m")]
-    joints = [(kind, joint) for kind, _, joint in life_joints(model)]
-    marks_m = [GROWTH_MARK * kind.gap(joint) for kind, joint in joints]
+    joints = [(kind, joint) for kind, _, joint in joints_by_kind(model)]
+    marks_m = [growth_mark * kind.gap(joint) for kind, joint in joints]
     unit, per_m = length_unit([*table[lengths].to_numpy().ravel(), *marks_m])
     for (kind, joint), mark_m in zip(joints, marks_m, strict=True):
         name = joint.name
@@ -67,7 +72,7 @@ def plot_life_wear(
         mark = mark_m * per_m
         depth.axhline(mark, color=line.get_color(), ls=":", lw=1.0)
         reached = cycles_at(table["cycles"], growth, mark)
-        text = f"{GROWTH_MARK:.0%} of c" + (f" at {reached:,.0f} cycles" if reached else "")
+        text = f"{growth_mark:.0%} of c" + (f" at {reached:,.0f} cycles" if reached else "")
         text += _band_text((marks or {}).get(name, {}).get("band"))
         depth.annotate(
             text, (cycles[0], mark), xytext=(2, 2), textcoords="offset points",
@@ -76,7 +81,6 @@ def plot_life_wear(
         if reached:
             depth.plot(reached, mark, "o", color=line.get_color(), ms=4)
         force.plot(cycles, table[f"{name}.max_contact_force_n"] / 1e3, ".-", label=name)
-    range_column = driver_columns(model, driver)[1]
     torque.plot(cycles, table[range_column], ".-", color="k")
     depth.set_ylabel(f"wear depth [{unit}]")
     legend_beside(depth)
@@ -110,7 +114,7 @@ def profile_updates(table: pd.DataFrame) -> list[int]:
 
 def plot_life_profiles(model: Model, table: pd.DataFrame, profiles: pd.DataFrame) -> Figure:
     """Wear profiles of every clearance joint at a few cycle counts, a row each."""
-    joints = [(kind, joint) for kind, _, joint in life_joints(model)]
+    joints = [(kind, joint) for kind, _, joint in joints_by_kind(model)]
     updates = profile_updates(table)
     colours = colormaps["viridis"](np.linspace(0.0, 0.9, len(updates)))
     fig = Figure(figsize=(10.0, 5.0 * len(joints) + 0.5), layout="constrained")
@@ -131,13 +135,17 @@ def save_life_figures(
     folder: Path,
     band: pd.DataFrame | None = None,
     marks: dict | None = None,
+    *,
+    growth_mark: float,
+    range_column: str,
 ) -> list[Path]:
     """Write life_wear.png and life_profiles.png into ``folder``; return their paths.
 
-    ``band`` and ``marks`` as for ``plot_life_wear``.
+    The other arguments as for ``plot_life_wear``.
     """
+    options = {"growth_mark": growth_mark, "range_column": range_column}
     figures = (
-        plot_life_wear(model, table, driver, band, marks),
+        plot_life_wear(model, table, driver, band, marks, **options),
         plot_life_profiles(model, table, profiles),
     )
-    return [save_png(fig, folder / name) for name, fig in zip(FIGURE_FILES, figures, strict=True)]
+    return [save_png(fig, folder / name) for name, fig in zip(LIFE_FIGURES, figures, strict=True)]

@@ -7,6 +7,7 @@ name stops the run at once instead of being overwritten.
 from ..joints import KINDS
 
 ANIMATION = "mechanism.gif"
+LIFE_FIGURES = ("life_wear.png", "life_profiles.png")  # a life run's (figures.life)
 ALL_FIGURES = frozenset(
     {
         "energy.png",

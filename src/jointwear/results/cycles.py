@@ -204,3 +204,16 @@ def lead_with_steady_state(
         spans = {key: entry[key] for key in WINDOW_KEYS if key in entry}
         joints[name] = {"type": entry["type"], **window, **rest, "whole_run": spans}
     return joints
+
+
+def cycles_at(cycles: pd.Series, values: pd.Series, level: float) -> float | None:
+    """Cycles at which ``values`` first reach ``level`` (linear between rows); None if never."""
+    reached = np.flatnonzero(values.to_numpy() >= level)
+    if reached.size == 0:
+        return None
+    i = int(reached[0])
+    if i == 0:
+        return float(cycles.iloc[0])
+    x0, x1 = cycles.iloc[i - 1], cycles.iloc[i]
+    y0, y1 = values.iloc[i - 1], values.iloc[i]
+    return float(x0 + (level - y0) / (y1 - y0) * (x1 - x0))

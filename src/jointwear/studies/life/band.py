@@ -37,9 +37,10 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from ...joints import ClearanceKind
+from ...joints import ClearanceKind, joints_by_kind
 from ...model import Model
-from .records import GROWTH_MARK, cycles_at, depth_keys, life_joints
+from ...results.cycles import cycles_at
+from .records import GROWTH_MARK, depth_keys
 
 BAND = ("0.5%", "1%")  # the companions of the default max_change "0.25%": twice, four times it
 FOLDER = "band"  # the companions' life folders, band/<bound>/
@@ -64,7 +65,7 @@ def banded(model: Model) -> Iterator[tuple[ClearanceKind, object, list[str]]]:
 
     The clearance growth, and the deepest cell of each mapped surface.
     """
-    for kind, _, joint in life_joints(model):
+    for kind, _, joint in joints_by_kind(model):
         yield kind, joint, ["clearance_growth_m", *depth_keys(kind, joint)]
 
 

@@ -17,6 +17,7 @@ from pathlib import Path
 
 import pandas as pd
 
+from ...figures.names import LIFE_FIGURES
 from ...io import append, check_folder, claim, make_folder, remove, write_atomic, write_text
 from ...model import ModelError
 from ...results.run_state import RunState, load_run_state
@@ -27,12 +28,11 @@ SUMMARY = "summary.json"
 BAND_TABLE = "life_band.csv"  # the uncertainty band against cycles (``band``)
 MODEL = "model.json"
 FIGURES = "figures"
-FIGURE_FILES = ("life_wear.png", "life_profiles.png")  # what figures.life writes there
 CHECKPOINTS = "checkpoint"
 CHECKPOINT = "checkpoint.json"
 FILES = (  # the fixed names a life run writes, for ``jointwear.io.claim``
     TABLE, PROFILES, SUMMARY, BAND_TABLE, MODEL, f"{CHECKPOINTS}/{CHECKPOINT}",
-    *(f"{FIGURES}/{name}" for name in FIGURE_FILES),
+    *(f"{FIGURES}/{name}" for name in LIFE_FIGURES),
 )  # fmt: skip
 
 
@@ -75,7 +75,7 @@ def start_folder(
     remove(folder / CHECKPOINTS / CHECKPOINT)  # first: it names the states
     remove(folder / SUMMARY)
     remove(folder / BAND_TABLE)
-    for name in FIGURE_FILES:  # an earlier run's: never mix two runs
+    for name in LIFE_FIGURES:  # an earlier run's: never mix two runs
         remove(folder / FIGURES / name)
     for old in (folder / CHECKPOINTS).glob("state_*.npz"):
         remove(old)

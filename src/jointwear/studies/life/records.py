@@ -8,28 +8,22 @@ largest wear per cycle and the peak contact force.
 
 from __future__ import annotations
 
-from collections.abc import Iterator, Sequence
+from collections.abc import Sequence
 
 import numpy as np
 import pandas as pd
 from numpy.typing import NDArray
 
 from ..._version import __version__
-from ...joints import KINDS, ClearanceKind
+from ...joints import ClearanceKind, joints_by_kind
 from ...joints.kind import deepest
 from ...model import Model
 from ...results import Results
 from ...results.clearance import wear_columns, wear_table
+from ...results.cycles import cycles_at
 
 GROWTH_MARK = 0.5  # the summary reports the cycles at which the growth reached this share of c
 Profiles = dict[str, NDArray[np.float64]]  # per joint type, (joints, surfaces, cells) [m]
-
-
-def life_joints(model: Model) -> Iterator[tuple[ClearanceKind, int, object]]:
-    """(kind, index among the kind's, joint) of every clearance joint, registry then file order."""
-    for kind in KINDS:
-        for k, joint in enumerate(kind.joints(model)):
-            yield kind, k, joint
 
 
 def cells(kind: ClearanceKind, joint: object, values: NDArray[np.float64]) -> NDArray[np.float64]:
@@ -59,8 +53,13 @@ def clearance_growths(
     """
     return {
         joint.name: kind.clearance_growth(joint, wear[kind.name][k], timeseries)
-        for kind, k, joint in life_joints(model)
+        for kind, k, joint in joints_by_kind(model)
     }
+
+
+def figure_options(model: Model, driver: str) -> dict:
+    """What the life figures take of the study: the growth mark and the driver's range column."""
+    return {"growth_mark": GROWTH_MARK, "range_column": driver_columns(model, driver)[1]}
 
 
 def driver_columns(model: Model, driver: str) -> tuple[str, str]:
@@ -82,7 +81,7 @@ def depth_keys(kind: ClearanceKind, joint: object) -> list[str]:
 def table_columns(model: Model, driver: str) -> list[str]:
     """The columns of life.csv, in order."""
     columns = ["update", "cycles", "simulated_cycles", "extrapolated_cycles", "steady"]
-    for kind, _, joint in life_joints(model):
+    for kind, _, joint in joints_by_kind(model):
         keys = [*depth_keys(kind, joint), *_JOINT_KEYS]
         columns += [f"{joint.name}.{key}" for key in keys]
     return [*columns, driver_columns(model, driver)[1], "wall_s"]
@@ -132,7 +131,7 @@ def update_row(
         Wall time of the whole run so far [s].
     """
     row: list = list(counts)
-    for kind, k, joint in life_joints(model):
+    for kind, k, joint in joints_by_kind(model):
         mine = wear[kind.name][k]
         row += [depth for depth, _ in deepest_cells(kind, joint, mine).values()]
         row += [
@@ -150,19 +149,6 @@ def profile_rows(model: Model, update: int, cycles: int, wear: Profiles) -> list
     """Rows of profiles.csv, in the order of ``profile_columns``."""
     table = wear_table(model, wear)
     return [[update, cycles, *row] for row in table.itertuples(index=False, name=None)]
-
-
-def cycles_at(cycles: pd.Series, values: pd.Series, level: float) -> float | None:
-    """Cycles at which ``values`` first reach ``level`` (linear between rows); None if never."""
-    reached = np.flatnonzero(values.to_numpy() >= level)
-    if reached.size == 0:
-        return None
-    i = int(reached[0])
-    if i == 0:
-        return float(cycles.iloc[0])
-    x0, x1 = cycles.iloc[i - 1], cycles.iloc[i]
-    y0, y1 = values.iloc[i - 1], values.iloc[i]
-    return float(x0 + (level - y0) / (y1 - y0) * (x1 - x0))
 
 
 def life_summary(
@@ -195,7 +181,7 @@ def life_summary(
         "unsteady_updates": int((table["steady"] == 0).sum()),
     }
     joints = {}
-    for kind, k, joint in life_joints(model):
+    for kind, k, joint in joints_by_kind(model):
         c = kind.gap(joint)
         entry: dict[str, object] = {"type": kind.name, kind.gap_key: c}
         if last is not None:

@@ -8,6 +8,7 @@ from pathlib import Path
 
 from ...model import ModelError, load_model
 from . import files
+from .records import figure_options
 
 
 def redraw_life_figures(folder: str | os.PathLike) -> list[Path]:
@@ -29,4 +30,5 @@ def redraw_life_figures(folder: str | os.PathLike) -> list[Path]:
         ) from None
     from ...figures.life import save_life_figures  # matplotlib only when drawing
 
-    return save_life_figures(model, driver, table, profiles, path / files.FIGURES)
+    options = figure_options(model, driver)
+    return save_life_figures(model, driver, table, profiles, path / files.FIGURES, **options)

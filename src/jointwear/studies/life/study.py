@@ -51,12 +51,13 @@ import pandas as pd
 
 from ...engine.interrupts import stop_requests
 from ...engine.status import FAILED, INTERRUPTED, SUCCESS
+from ...joints import joints_by_kind
 from ...model import Model, ModelError, load_model
 from ...results.run_state import RunState
 from . import files
 from .band import BAND, band_summary, band_table, folder_name, run_band
 from .band import FOLDER as BAND_FOLDER
-from .records import life_joints, life_summary, profile_columns, table_columns
+from .records import figure_options, life_summary, profile_columns, table_columns
 from .settings import LifeSettings, cycle_driver, with_feedback
 from .update import RESUME, LifeRun
 
@@ -194,7 +195,7 @@ def life(
         driver, period = cycle_driver(model)
     except ModelError as error:
         problems += error.problems
-    joints = [(kind, joint) for kind, _, joint in life_joints(model)]
+    joints = [(kind, joint) for kind, _, joint in joints_by_kind(model)]
     if not joints:
         problems.append("joints: a life run needs a clearance joint ([joints.clearance])")
     problems += [
@@ -260,7 +261,7 @@ def life(
 
             save_life_figures(
                 model, driver, table, profiles, folder / files.FIGURES, band=shaded,
-                marks=summary["clearance_joints"],
+                marks=summary["clearance_joints"], **figure_options(model, driver),
             )  # fmt: skip
     return LifeResults(table, profiles, summary, point.state)
 

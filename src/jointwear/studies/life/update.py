@@ -14,12 +14,13 @@ import numpy as np
 
 from ...engine.simulate import simulate
 from ...engine.status import CLEARANCE_LIMIT, FAILED, INTERRUPTED, SUCCESS, WORN_THROUGH
+from ...joints import joints_by_kind
 from ...model import Model
 from ...results import Results
 from ...results.clearance import UM
 from ...results.run_state import RunState
 from . import files
-from .records import Profiles, cells, clearance_growths, life_joints, profile_rows, update_row
+from .records import Profiles, cells, clearance_growths, profile_rows, update_row
 from .settings import LifeSettings
 
 RESUME = "; --resume (resume=True) goes on from there"
@@ -153,7 +154,7 @@ class LifeRun:
 
     def _steady(self, before: Profiles, last: Profiles) -> bool:
         """Whether two wears per cycle agree, cell by cell, to ``steady_tolerance``."""
-        for kind, k, joint in life_joints(self.model):
+        for kind, k, joint in joints_by_kind(self.model):
             then = cells(kind, joint, before[kind.name][k])
             now = cells(kind, joint, last[kind.name][k])
             if np.abs(now - then).max() > self.settings.steady_tolerance * now.max():
@@ -203,7 +204,7 @@ class LifeRun:
         [m/cycle].
         """
         extra = left
-        for kind, k, joint in life_joints(self.model):
+        for kind, k, joint in joints_by_kind(self.model):
             bound = self.settings.change_bound(kind.gap(joint) + growth[joint.name])
             per_cycle = cells(kind, joint, rate[kind.name][k])
             wearing = per_cycle > 0.0
@@ -217,7 +218,7 @@ class LifeRun:
         self, wear: Profiles, growth: dict[str, float], before: int, after: int
     ) -> bool:
         """Stop if profiles ``wear`` pass a limit (``study.life``); True if so."""
-        for kind, k, joint in life_joints(self.model):
+        for kind, k, joint in joints_by_kind(self.model):
             span = f"between cycles {before} and {after}"
             problem = kind.worn_through(joint, wear[kind.name][k], span)
             if problem is not None:
