@@ -13,7 +13,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..joints import KINDS
-from ..kernels.elements import ElementLog, Elements, ElementScratch, ElementState
+from ..kernels.elements import ElementLog, Elements, ElementScratch, ElementState, no_elements
 from ..kernels.structs import to_struct
 from ..mechanism.system import System
 from ..results.run_state import FIELDS, RunState
@@ -42,11 +42,18 @@ class Contacts:
         }
 
     def _tuple(self, cls: type, part: str) -> NamedTuple:
-        fields = [to_struct(getattr(self.kinds[k.name], part)) for k in KINDS]
+        absent = to_struct(no_elements())
+        fields = [
+            to_struct(getattr(arrays, part)) if arrays.table.ints.shape[0] else absent
+            for arrays in (self.kinds[kind.name] for kind in KINDS)
+        ]
         return cls(*fields)
 
     def structs(self) -> tuple[Elements, ElementState, ElementScratch, ElementLog]:
-        """The loop's tuples of structs (sharing these arrays)."""
+        """The loop's tuples of structs (sharing these arrays).
+
+        A kind without joints goes in as ``NoElements``, so the loop compiles nothing of it.
+        """
         return (
             self._tuple(Elements, "table"),
             self._tuple(ElementState, "state"),

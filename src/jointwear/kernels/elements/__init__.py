@@ -8,14 +8,21 @@ numbers the slots of all kinds one after the other, in the order of ``Elements``
 ``_locate`` is the one place that maps a slot to its kind, and the functions here fan out to
 the kinds.
 
+A kind the model has no joints of gets ``NoElements`` in all four tuples: each function
+below reaches a kind's own function through a stub that dispatches on its table's type when
+compiled (``structs.by_kind``), and for ``NoElements`` that is a function doing nothing, so a
+run compiles only the kinds its model has (one cached specialisation per combination).
+
 To register a kind (its Python side: ``jointwear.joints``): add its module's tables as a
 field of the four tuples, and its line to ``_locate`` and to each function below.
 """
 
 from typing import NamedTuple
 
+import numpy as np
 from numba import njit
 
+from ..structs import by_kind
 from . import journal, pin_slot, slider
 
 
@@ -54,6 +61,100 @@ class ElementScratch(NamedTuple):
 KERNELS = (journal, slider, pin_slot)  # in the order of the tuples' fields
 
 
+class NoElements(NamedTuple):
+    """All four tables of a kind the model has no joints of (its functions do nothing)."""
+
+    ints: np.ndarray  # (0, 1) int64: no rows, so no slots
+    contact_on: np.ndarray  # (0,) int64
+
+
+def no_elements() -> NoElements:
+    """The tables of an absent kind (Python)."""
+    return NoElements(ints=np.zeros((0, 1), dtype=np.int64), contact_on=np.zeros(0, np.int64))
+
+
+@njit(cache=True, no_cpython_wrapper=True)
+def _no_forces(table, state, scratch, q, qd, g):
+    return None
+
+
+@njit(cache=True, no_cpython_wrapper=True)
+def _no_excess(table, state, scratch, k, q, qd):
+    return 0.0
+
+
+@njit(cache=True, no_cpython_wrapper=True)
+def _no_tolerance(table, k):
+    return 0.0
+
+
+@njit(cache=True, no_cpython_wrapper=True)
+def _no_period(table, state, scratch, log, k, q, qd, info):
+    return False
+
+
+@njit(cache=True, no_cpython_wrapper=True)
+def _no_accumulation(table, state, scratch, log, t_old, t_new, q_mid, qd_mid, snap_times, first):
+    return None
+
+
+@njit(cache=True, no_cpython_wrapper=True)
+def _no_outputs(table, scratch, row, c):
+    return c
+
+
+@njit(cache=True, no_cpython_wrapper=True)
+def _no_energy(table, scratch):
+    return 0.0
+
+
+def _each_kind(name: str, absent: object) -> dict:
+    """Kernel function ``name`` of every kind, by its table's type name, and ``absent``."""
+    tables = [cls.__name__ for cls in Elements.__annotations__.values()]
+    kinds = {table: getattr(module, name) for table, module in zip(tables, KERNELS, strict=True)}
+    return {**kinds, NoElements.__name__: absent}
+
+
+def _kind_add_forces(table, state, scratch, q, qd, g):
+    """A kind's ``add_forces`` (``structs.by_kind``: chosen by the table's type)."""
+
+
+def _kind_penetration_excess(table, state, scratch, k, q, qd):
+    """A kind's ``penetration_excess``."""
+
+
+def _kind_tolerance(table, k):
+    """A kind's ``tolerance``."""
+
+
+def _kind_begin_period(table, state, scratch, log, k, q, qd, info):
+    """A kind's ``begin_period``."""
+
+
+def _kind_accumulate(table, state, scratch, log, t_old, t_new, q_mid, qd_mid, snap_times, first):
+    """A kind's ``accumulate``."""
+
+
+def _kind_write_outputs(table, scratch, row, c):
+    """A kind's ``write_outputs``."""
+
+
+def _kind_elastic_energy(table, scratch):
+    """A kind's ``elastic_energy``."""
+
+
+for _stub, _absent in (
+    (_kind_add_forces, _no_forces),
+    (_kind_penetration_excess, _no_excess),
+    (_kind_tolerance, _no_tolerance),
+    (_kind_begin_period, _no_period),
+    (_kind_accumulate, _no_accumulation),
+    (_kind_write_outputs, _no_outputs),
+    (_kind_elastic_energy, _no_energy),
+):
+    by_kind(_stub, _each_kind(_stub.__name__.removeprefix("_kind_"), _absent))
+
+
 @njit(cache=True, no_cpython_wrapper=True, inline="always")
 def slot_count(el):
     """Number of contact slots of all elements."""
@@ -90,9 +191,9 @@ def owner(el, slot):
 @njit(cache=True, no_cpython_wrapper=True, inline="always")
 def add_forces(el, st, sc, q, qd, g):
     """Evaluate every element at (q, q') and add its contact forces to g [N, N, N m]."""
-    journal.add_forces(el.journal, st.journal, sc.journal, q, qd, g)
-    slider.add_forces(el.slider, st.slider, sc.slider, q, qd, g)
-    pin_slot.add_forces(el.pin_slot, st.pin_slot, sc.pin_slot, q, qd, g)
+    _kind_add_forces(el.journal, st.journal, sc.journal, q, qd, g)
+    _kind_add_forces(el.slider, st.slider, sc.slider, q, qd, g)
+    _kind_add_forces(el.pin_slot, st.pin_slot, sc.pin_slot, q, qd, g)
 
 
 @njit(cache=True, no_cpython_wrapper=True, inline="always")
@@ -100,10 +201,10 @@ def penetration_excess(el, st, sc, slot, q, qd):
     """Penetration of a contact slot beyond its contact tolerance at (q, q') [m]."""
     kind, local = _locate(el, slot)
     if kind == 0:
-        return journal.penetration_excess(el.journal, st.journal, sc.journal, local, q, qd)
+        return _kind_penetration_excess(el.journal, st.journal, sc.journal, local, q, qd)
     if kind == 1:
-        return slider.penetration_excess(el.slider, st.slider, sc.slider, local, q, qd)
-    return pin_slot.penetration_excess(el.pin_slot, st.pin_slot, sc.pin_slot, local, q, qd)
+        return _kind_penetration_excess(el.slider, st.slider, sc.slider, local, q, qd)
+    return _kind_penetration_excess(el.pin_slot, st.pin_slot, sc.pin_slot, local, q, qd)
 
 
 @njit(cache=True, no_cpython_wrapper=True, inline="always")
@@ -111,10 +212,10 @@ def tolerance(el, slot):
     """Contact tolerance of a slot [m]."""
     kind, local = _locate(el, slot)
     if kind == 0:
-        return journal.tolerance(el.journal, local)
+        return _kind_tolerance(el.journal, local)
     if kind == 1:
-        return slider.tolerance(el.slider, local)
-    return pin_slot.tolerance(el.pin_slot, local)
+        return _kind_tolerance(el.slider, local)
+    return _kind_tolerance(el.pin_slot, local)
 
 
 @njit(cache=True, no_cpython_wrapper=True, inline="always")
@@ -133,12 +234,12 @@ def begin_period(el, st, sc, log, slot, q, qd, info):
     """Open or close a slot's contact period at a step end; True when one opens (info filled)."""
     kind, local = _locate(el, slot)
     if kind == 0:
-        return journal.begin_period(
+        return _kind_begin_period(
             el.journal, st.journal, sc.journal, log.journal, local, q, qd, info
         )
     if kind == 1:
-        return slider.begin_period(el.slider, st.slider, sc.slider, log.slider, local, q, qd, info)
-    return pin_slot.begin_period(
+        return _kind_begin_period(el.slider, st.slider, sc.slider, log.slider, local, q, qd, info)
+    return _kind_begin_period(
         el.pin_slot, st.pin_slot, sc.pin_slot, log.pin_slot, local, q, qd, info
     )
 
@@ -146,15 +247,15 @@ def begin_period(el, st, sc, log, slot, q, qd, info):
 @njit(cache=True, no_cpython_wrapper=True, inline="always")
 def accumulate(el, st, sc, log, t_old, t_new, q_mid, qd_mid, snap_times, first):
     """Wear, totals and snapshots of the accepted step [t_old, t_new] [s], from its midpoint."""
-    journal.accumulate(
+    _kind_accumulate(
         el.journal, st.journal, sc.journal, log.journal, t_old, t_new, q_mid, qd_mid,
         snap_times, first,
     )  # fmt: skip
-    slider.accumulate(
+    _kind_accumulate(
         el.slider, st.slider, sc.slider, log.slider, t_old, t_new, q_mid, qd_mid,
         snap_times, first,
     )  # fmt: skip
-    pin_slot.accumulate(
+    _kind_accumulate(
         el.pin_slot, st.pin_slot, sc.pin_slot, log.pin_slot, t_old, t_new, q_mid, qd_mid,
         snap_times, first,
     )  # fmt: skip
@@ -163,16 +264,16 @@ def accumulate(el, st, sc, log, t_old, t_new, q_mid, qd_mid, snap_times, first):
 @njit(cache=True, no_cpython_wrapper=True, inline="always")
 def write_outputs(el, sc, row, c):
     """Every element's time-series columns from its last evaluation; the next free column."""
-    c = journal.write_outputs(el.journal, sc.journal, row, c)
-    c = slider.write_outputs(el.slider, sc.slider, row, c)
-    return pin_slot.write_outputs(el.pin_slot, sc.pin_slot, row, c)
+    c = _kind_write_outputs(el.journal, sc.journal, row, c)
+    c = _kind_write_outputs(el.slider, sc.slider, row, c)
+    return _kind_write_outputs(el.pin_slot, sc.pin_slot, row, c)
 
 
 @njit(cache=True, no_cpython_wrapper=True, inline="always")
 def elastic_energy(el, sc):
     """Elastic energy stored in the contacts of the last evaluation [J]."""
     return (
-        journal.elastic_energy(el.journal, sc.journal)
-        + slider.elastic_energy(el.slider, sc.slider)
-        + pin_slot.elastic_energy(el.pin_slot, sc.pin_slot)
+        _kind_elastic_energy(el.journal, sc.journal)
+        + _kind_elastic_energy(el.slider, sc.slider)
+        + _kind_elastic_energy(el.pin_slot, sc.pin_slot)
     )
