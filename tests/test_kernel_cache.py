@@ -6,12 +6,13 @@ import subprocess
 import sys
 import textwrap
 
-import pandas as pd
+import numpy as np
 import pytest
 from numba.core import caching
 from runs import EXAMPLES
 
 import jointwear as jw
+from jointwear.engine.prepare import prepare
 from jointwear.kernels import cache
 
 
@@ -154,30 +155,32 @@ def test_an_index_naming_a_moved_type_is_a_miss(tmp_path):
     assert _python(script.format(module="new_home"), env).split() == ["1"]  # and loaded
 
 
-@pytest.mark.slow
-def test_plain_numba_runs_as_the_stamped_kernels_do(tmp_path):
+def test_plain_numba_prepares_as_the_stamped_kernels_do(tmp_path):
     # JOINTWEAR_PLAIN_NUMBA=1: numba's own locators and loading, named tuples for structs, and
-    # neither cache.py nor struct_ref.py imported. Everything compiles into an empty cache
-    # (about 2 min of CPU). The same arithmetic either way: the same numbers.
+    # neither cache.py nor struct_ref.py imported. A run's preparation (arrays, assembly with
+    # its kernels, the lock-up check of a driven four-bar) compiles into an empty cache and
+    # gives the same start, bit for bit. (A whole run compiles the step loop without the
+    # cache, over a minute of CI; its time series was compared once, and equal exactly.)
     env = {**os.environ, "JOINTWEAR_PLAIN_NUMBA": "1", "NUMBA_CACHE_DIR": str(tmp_path / "c")}
-    pendulum = EXAMPLES / "pendulum.toml"
-    model = jw.load_model(pendulum, overrides=["solver.t_end=0.05"])
-    out = tmp_path / "plain.pickle"
+    fourbar = EXAMPLES / "flores2009_fourbar.toml"
+    out = tmp_path / "plain.npy"
     script = f"""
         import sys
+        import numpy as np
         import jointwear as jw
-        from jointwear.kernels import loop, structs
-        res = jw.simulate(jw.load_model({str(pendulum)!r}, overrides=["solver.t_end=0.05"]))
-        res.timeseries.to_pickle({str(out)!r})
-        print(res.status, type(loop.advance._cache._impl.locator).__name__)
+        from jointwear.engine.prepare import prepare
+        from jointwear.kernels import constraints, structs
+        ready = prepare(jw.load_model({str(fourbar)!r}))
+        np.save({str(out)!r}, ready.assembly.y0)
+        locator = constraints.evaluate_constraints._cache._impl.locator
+        print(ready.lock is None, type(locator).__name__)
         print(structs.StructProxy is tuple, "jointwear.kernels.cache" in sys.modules)
         print("jointwear.kernels.struct_ref" in sys.modules)
     """
     assert _python(script, env).split() == [
-        *("success", "UserProvidedCacheLocator"),
+        *("True", "UserProvidedCacheLocator"),
         *("True", "False", "False"),
     ]
-    assert any((tmp_path / "c").rglob("loop.advance-*.nbi"))  # numba's own cache, filled
-    plain = pd.read_pickle(out)
-    assert len(plain) == 51
-    pd.testing.assert_frame_equal(plain, jw.simulate(model).timeseries, check_exact=True)
+    assert any((tmp_path / "c").rglob("constraints.evaluate_constraints-*.nbi"))  # numba's own
+    start = prepare(jw.load_model(fourbar)).assembly.y0
+    np.testing.assert_array_equal(np.load(out), start)
