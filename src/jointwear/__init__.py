@@ -16,12 +16,14 @@ if TYPE_CHECKING:
     from .citations import citations_for, print_citations
     from .engine.run_file import run
     from .engine.simulate import simulate
+    from .engine.user_laws import LawKey, register_law, unregister_law
     from .model import Model, ModelError, load_model, parse_model
     from .results import Results, load_results
     from .studies.life.study import LifeResults, life
     from .studies.sweep.study import sweep
 
 _PUBLIC = {  # public name -> the module that defines it
+    "LawKey": ".engine.user_laws",
     "LifeResults": ".studies.life.study",
     "Model": ".model",
     "ModelError": ".model",
@@ -32,12 +34,15 @@ _PUBLIC = {  # public name -> the module that defines it
     "load_results": ".results",
     "parse_model": ".model",
     "print_citations": ".citations",
+    "register_law": ".engine.user_laws",
     "run": ".engine.run_file",
     "simulate": ".engine.simulate",
     "sweep": ".studies.sweep.study",
+    "unregister_law": ".engine.user_laws",
 }
 
 __all__ = [
+    "LawKey",
     "LifeResults",
     "Model",
     "ModelError",
@@ -49,9 +54,11 @@ __all__ = [
     "load_results",
     "parse_model",
     "print_citations",
+    "register_law",
     "run",
     "simulate",
     "sweep",
+    "unregister_law",
 ]
 
 

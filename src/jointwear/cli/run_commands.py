@@ -255,11 +255,12 @@ def _law_rows(clearance: ClearanceTable, table: Table) -> list[tuple]:
 
     rows: list[tuple] = [("friction coefficient c_f", clearance.friction_coefficient, "")]
     summaries = []
-    for family, (law_key, laws) in FAMILIES.items():
-        law = laws[getattr(clearance, law_key)]
-        rows.append((f"{family} law", law.name, ""))
-        rows += [(f"  {key.name}", getattr(clearance, key.name), key.unit) for key in law.keys]
-        packed = law.pack(clearance.law_values(law))
+    for title, family in FAMILIES.items():
+        law = family.by_name[getattr(clearance, family.key)]
+        values = clearance.law_values(law)
+        rows.append((f"{title} law", law.name, ""))
+        rows += [(f"  {key.name}", values[key.name], key.unit) for key in law.keys]
+        packed = law.pack(values)
         rows += [
             (f"  {label}", value, unit)
             for (label, unit), value in zip(law.shown, packed[: len(law.shown)], strict=True)

@@ -14,9 +14,16 @@ from numpy.typing import NDArray
 
 from ..joints import KINDS
 from ..kernels.elements import ElementLog, Elements, ElementScratch, ElementState, no_elements
+from ..kernels.laws.user import UserLaws
 from ..kernels.structs import to_struct
 from ..mechanism.system import System
 from ..results.run_state import FIELDS, RunState
+
+
+def _nested(record: NamedTuple) -> NamedTuple:
+    """A table with its ``UserLaws`` as a struct too (``NoUserLaws`` holds no array)."""
+    user = getattr(record, "user", None)
+    return record._replace(user=to_struct(user)) if isinstance(user, UserLaws) else record
 
 
 class KindArrays(NamedTuple):
@@ -29,13 +36,19 @@ class KindArrays(NamedTuple):
 
 
 class Contacts:
-    """Every kind's arrays of a run, allocated unworn with no contact under way."""
+    """Every kind's arrays of a run, allocated unworn with no contact under way.
 
-    def __init__(self, system: System, snapshots: int) -> None:
+    ``laws``: per kind, its rows' laws registered from Python (``engine.user_laws``).
+    """
+
+    def __init__(self, system: System, snapshots: int, laws: dict[str, NamedTuple]) -> None:
         self.kinds: dict[str, KindArrays] = {
             kind.name: KindArrays(
                 *kind.module.make_tables(
-                    system.elements[kind.name].ints, system.elements[kind.name].params, snapshots
+                    system.elements[kind.name].ints,
+                    system.elements[kind.name].params,
+                    snapshots,
+                    laws[kind.name],
                 )
             )
             for kind in KINDS
@@ -44,7 +57,7 @@ class Contacts:
     def _tuple(self, cls: type, part: str) -> NamedTuple:
         absent = to_struct(no_elements())
         fields = [
-            to_struct(getattr(arrays, part)) if arrays.table.ints.shape[0] else absent
+            to_struct(_nested(getattr(arrays, part))) if arrays.table.ints.shape[0] else absent
             for arrays in (self.kinds[kind.name] for kind in KINDS)
         ]
         return cls(*fields)

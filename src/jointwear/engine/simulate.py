@@ -33,6 +33,7 @@ from .interrupts import interruptible
 from .prepare import prepare
 from .provenance import provenance
 from .summary import clearance_summary, clearance_tables, run_stats, summary
+from .user_laws import user_tables
 
 # A run that reaches its lock-up time, or fails past this share of it, ends ``lock_up``.
 LOCK_NEAR = 0.9
@@ -143,7 +144,7 @@ def simulate(
         ctl = _control(model, t0, t_end)
         n_state = assembly.y0.shape[0]
         integ = integrators.make_integrator(solver.method, n_state)
-        contacts = Contacts(ready.system, ctl.snapshot_times.shape[0])
+        contacts = Contacts(ready.system, ctl.snapshot_times.shape[0], user_tables(model))
         elements, states, scratches, element_logs = contacts.structs()
         problem = Problem(
             mech=ready.system.mechanism,

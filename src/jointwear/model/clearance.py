@@ -11,23 +11,25 @@ subclasses it (``joints.<type>.schema``).
 
 import math
 from collections.abc import Callable
-from functools import partial
+from functools import cache, partial
 from typing import TYPE_CHECKING, Annotated, ClassVar, NamedTuple
 
 from annotated_types import Ge, Gt, Le
-from pydantic import BeforeValidator, create_model, model_validator
+from pydantic import AfterValidator, BeforeValidator, ConfigDict, create_model, model_validator
 
-from ..units import Length, Pressure, Speed, Viscosity, WearCoefficient
+from ..units import Length, Pressure, Speed, Viscosity, WearCoefficient, registry, to_si
+from .errors import unknown
 from .laws import DAMPING, EVERY, FRICTION, LUBRICATION, NORMAL, SHARED, WEAR, WEAR_DISTRIBUTION
+from .laws import user as user_laws
 from .laws.normal import effective_modulus
 from .laws.record import SHAPE_NAMES, Contact, Family, Key, Law, family_keys
-from .tables import Number, Table, one_of
+from .tables import Number, Table
 
 if TYPE_CHECKING:
     from .schema import Model
 
-# The shared families as {title: (model-file key, laws by name)}, and the distributions' codes.
-FAMILIES = {family.title: (family.key, family.by_name) for family in SHARED}
+# The shared families by title, and the distributions' codes.
+FAMILIES = {family.title: family for family in SHARED}
 WEAR_DISTRIBUTIONS = {law.name: law.code for law in WEAR_DISTRIBUTION.laws}
 
 PositiveLength = Annotated[Length, Gt(0)]
@@ -51,11 +53,20 @@ _KEY_TYPES = {"": Number, "m": Length, "m/s": Speed, "Pa": Pressure, "1/Pa": Wea
               "N/m^n": Annotated[Number, BeforeValidator(_plain_stiffness)]}  # fmt: skip
 
 
+def _value_type(unit: str) -> object:
+    """The value type of a key in ``unit``: a built-in key's, or any SI unit pint reads."""
+    if unit in _KEY_TYPES:
+        return _KEY_TYPES[unit]
+    dimension = str(registry().get_dimensionality(unit))
+    return Annotated[float, BeforeValidator(partial(to_si, dimension=dimension))]
+
+
 def _key_field(key: Key) -> tuple[object, object]:
     """(annotation, default) of a law's key in the schema, from its record."""
     bounds = [] if key.low is None else [Gt(key.low) if key.positive else Ge(key.low)]
     bounds += [] if key.high is None else [Le(key.high)]
-    value = Annotated[(_KEY_TYPES[key.unit], *bounds)] if bounds else _KEY_TYPES[key.unit]
+    value = _value_type(key.unit)
+    value = Annotated[(value, *bounds)] if bounds else value
     if key.default is None:
         return value | None, None
     return value, key.default
@@ -83,13 +94,42 @@ def law_parameters(clearance: "ClearanceTable") -> dict[str, PackedLaw]:
     }
 
 
+def _unused(key: str, family: Family, readers: list[str], chosen: Law) -> str:
+    """The line refusing ``key``, which only the laws ``readers`` of ``family`` read."""
+    names = " or ".join(f"'{name}'" for name in readers)
+    return (
+        f"{key} is used by {family.key} {names} only, and this joint's {family.key} is "
+        f"'{chosen.name}'; remove it or choose another {family.key}"
+    )
+
+
 DERIVED_CHECK_SHARES = (0.01, 0.1, 0.4)  # of the clearance: penetrations the laws must handle
 DERIVED_CHECK_FORCE = 1000.0  # [N] a load the Hertz patch must handle
 
 
 def law_name(family: Family) -> object:
-    """The type of a key naming one of ``family``'s laws."""
-    return Annotated[str, one_of(family.by_name, family.title + " law")]
+    """The type of a key naming one of ``family``'s laws, built-in or registered from Python."""
+    what = family.title + " law"
+
+    def check(value: str) -> str:
+        laws = family.by_name
+        if value not in laws:
+            registering = (
+                "; a law of your own must be registered before the model is loaded "
+                "(jointwear.register_law)"
+                if family.key in user_laws.ROLES
+                else ""
+            )
+            raise ValueError(unknown(what, value, list(laws), f"known {what}s") + registering)
+        return value
+
+    return Annotated[str, AfterValidator(check)]
+
+
+@cache
+def _own_keys_table(keys: tuple[Key, ...]) -> type[Table]:
+    """A table of the own keys ``keys`` of laws registered from Python, to validate them."""
+    return create_model("OwnKeys", __base__=Table, **{key.name: _key_field(key) for key in keys})
 
 
 class ClearanceTable(_LawKeys):
@@ -101,6 +141,7 @@ class ClearanceTable(_LawKeys):
     """
 
     FAMILIES: ClassVar[tuple[Family, ...]] = SHARED
+    model_config = ConfigDict(extra="allow", frozen=True)  # the own keys of registered laws
 
     width: PositiveLength
     youngs_modulus: Modulus | tuple[Modulus, Modulus]  # both, or [first body, second body]
@@ -132,6 +173,25 @@ class ClearanceTable(_LawKeys):
             )
         return {**data, "normal_law": NORMAL.default, "damping": law}
 
+    @classmethod
+    def known_keys(cls) -> list[str]:
+        """Its fields, and the own keys of the laws registered from Python."""
+        return [*cls.model_fields, *user_laws.own_keys()]
+
+    @model_validator(mode="before")
+    @classmethod
+    def _own_keys_in_si(cls, data: object) -> object:
+        """The own keys of registered laws, validated and in SI, as the fields are."""
+        if not isinstance(data, dict):
+            return data
+        own = user_laws.own_keys()
+        given = {name: value for name, value in data.items() if name in own}
+        if not given:
+            return data
+        table = _own_keys_table(tuple(own[name] for name in given))
+        values = table.model_validate(given)  # its ValidationError names each key
+        return {**data, **values.model_dump()}
+
     @property
     def contact(self) -> Contact:
         """The contact as the laws see it (the element kind's table defines it)."""
@@ -143,21 +203,30 @@ class ClearanceTable(_LawKeys):
 
     def law_values(self, law: Law) -> dict[str, float | None]:
         """The values of the keys ``law`` reads (SI; None: not given)."""
-        return {key.name: getattr(self, key.name) for key in law.keys}
+        own = self.model_extra or {}
+        return {
+            key.name: getattr(self, key.name) if key.name in type(self).model_fields
+            else own.get(key.name, key.default)
+            for key in law.keys
+        }  # fmt: skip
 
     def _unused_keys(self) -> list[str]:
         lines = []  # a default value is not a setting (and model.json writes them all)
-        for family, chosen in self.chosen_laws():
+        chosen = self.chosen_laws()
+        for family, law in chosen:
             for key in family_keys(family):
                 given = getattr(self, key) != type(self).model_fields[key].default
-                if given and key not in {k.name for k in chosen.keys}:
-                    users = [law.name for law in family.laws if key in {k.name for k in law.keys}]
-                    names = " or ".join(f"'{law}'" for law in users)
-                    lines.append(
-                        f"{key} is used by {family.key} {names} only, and this joint's "
-                        f"{family.key} is '{chosen.name}'; remove it or choose another "
-                        f"{family.key}"
-                    )
+                if given and key not in {k.name for k in law.keys}:
+                    users = [other.name for other in family.laws
+                             if key in {k.name for k in other.keys}]  # fmt: skip
+                    lines.append(_unused(key, family, users, law))
+        by_family = {family.key: law for family, law in chosen}
+        for key in self.model_extra or {}:  # own keys of laws registered from Python
+            users = user_laws.readers(key)
+            if not any(by_family[user.family].name == user.name for user in users):
+                family = user_laws.FAMILIES[users[0].family]
+                readers = [user.name for user in users if user.family == family.key]
+                lines.append(_unused(key, family, readers, by_family[family.key]))
         return lines
 
     def _law_problems(self, shape: str) -> list[str]:
@@ -285,12 +354,15 @@ class ClearanceTable(_LawKeys):
 
         Evaluates the kernels (imports them).
         """
-        from ..kernels.laws.normal import elastic_force, elastic_stiffness
-
         contact = self.contact
-        code = NORMAL.by_name[self.normal_law].code
         args = (delta, self.stiffness, self.exponent, contact.contact_modulus,
                 contact.clearance, self.width)  # fmt: skip
+        law = user_laws.registered(self.normal_law)
+        if law is not None:
+            return user_laws.elastic_force(law, args, self.law_values(NORMAL.by_name[law.name]))
+        from ..kernels.laws.normal import elastic_force, elastic_stiffness
+
+        code = NORMAL.by_name[self.normal_law].code
         return elastic_force(code, *args), elastic_stiffness(code, *args)
 
 

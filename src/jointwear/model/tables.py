@@ -43,14 +43,20 @@ class Table(BaseModel):
     @classmethod
     def _known_keys(cls, data: object) -> object:
         if isinstance(data, dict):
-            extra = [key for key in data if key not in cls.model_fields]
+            known = cls.known_keys()
+            extra = [key for key in data if key not in known]
             if extra:
-                hint = did_you_mean(extra[0], cls.model_fields) if len(extra) == 1 else ""
+                hint = did_you_mean(extra[0], known) if len(extra) == 1 else ""
                 raise ValueError(
                     f"unknown key{'s' * (len(extra) > 1)} {', '.join(map(repr, extra))}; "
-                    f"known keys are {', '.join(cls.model_fields)}{hint}"
+                    f"known keys are {', '.join(known)}{hint}"
                 )
         return data
+
+    @classmethod
+    def known_keys(cls) -> list[str]:
+        """The keys the table accepts: its fields."""
+        return list(cls.model_fields)
 
 
 class JointTable(Table):

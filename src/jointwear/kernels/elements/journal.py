@@ -28,11 +28,19 @@ from numba import njit
 
 from ..kinematics import angular_velocity
 from ..laws.foundation import foundation_load, foundation_points, spread_foundation_wear
-from ..laws.friction import slip_speed, tangential_force
 from ..laws.lubrication import film_force_components, film_power_loss, film_torques
-from ..laws.normal import ElasticLaw, damped, elastic_force
-from ..laws.normal import elastic_energy as law_energy
-from ..laws.wear import accumulate_wear, depth_at, hertz_line_contact, wear_coefficient
+from ..laws.normal import ElasticLaw
+from ..laws.user import (
+    NoUserLaws,
+    UserLaws,
+    damped,
+    elastic_force,
+    slip_speed,
+    tangential_force,
+    wear_coefficient,
+)
+from ..laws.user import elastic_energy as law_energy
+from ..laws.wear import accumulate_wear, depth_at, hertz_line_contact
 from .journal_geometry import (
     apply_at_centres,
     apply_contact,
@@ -165,6 +173,7 @@ class JournalTable(NamedTuple):
 
     ints: np.ndarray  # (nc, N_INTS) int64
     params: np.ndarray  # (nc, N_PARAMS)
+    user: UserLaws | NoUserLaws  # the rows' laws registered from Python
 
 
 class JournalState(NamedTuple):
@@ -189,13 +198,20 @@ class JournalScratch(NamedTuple):
 
 
 def make_tables(
-    ints: np.ndarray, params: np.ndarray, snapshots: int
+    ints: np.ndarray,
+    params: np.ndarray,
+    snapshots: int,
+    user: UserLaws | NoUserLaws | None = None,
 ) -> tuple[JournalTable, JournalState, JournalLog, JournalScratch]:
-    """Allocate a run's arrays for the joints of ``ints`` and ``params``, unworn (Python)."""
+    """Allocate a run's arrays for the joints of ``ints`` and ``params``, unworn (Python).
+
+    ``user``: the rows' user laws (``laws.user``); None: no row has one.
+    """
+    user = NoUserLaws(rows=ints.shape[0]) if user is None else user
     nc = ints.shape[0]
     sectors = int(ints[:, I_SECTORS].max(initial=1))
     return (
-        JournalTable(ints=ints.astype(np.int64), params=params.astype(np.float64)),
+        JournalTable(ints=ints.astype(np.int64), params=params.astype(np.float64), user=user),
         JournalState(
             contact_on=np.zeros(nc, dtype=np.int64),
             impact_speed=np.zeros(nc),
@@ -268,10 +284,13 @@ def evaluate(table, state, scratch, k, q, qd):
         impact_speed = state.impact_speed[k]
     if not foundation:
         elastic = elastic_force(
-            law[I_NORMAL], delta, p[P_K], p[P_EXP], p[P_ESTAR], p[P_C], p[P_WIDTH]
-        )
-    f_n = damped(elastic, delta_dot, impact_speed, law[I_DAMPING], p[P_CE])
-    f_t = tangential_force(law[I_FRICTION], v_t, f_n, p[P_CF], p[P_F0], p[P_F1], p[P_F2])
+            table.user, k, law[I_NORMAL], delta, p[P_K], p[P_EXP], p[P_ESTAR], p[P_C],
+            p[P_WIDTH],
+        )  # fmt: skip
+    f_n = damped(table.user, k, elastic, delta_dot, impact_speed, law[I_DAMPING], p[P_CE])
+    f_t = tangential_force(
+        table.user, k, law[I_FRICTION], v_t, f_n, p[P_CF], p[P_F0], p[P_F1], p[P_F2]
+    )
     out[C_FN] = f_n
     out[C_FT] = f_t
     out[C_ELASTIC] = elastic
@@ -407,7 +426,7 @@ def _wear_surfaces(table, state, scratch, k, ds):
     p = table.params[k]
     law = table.ints[k]
     f_n = c[C_FN]
-    coef = wear_coefficient(law[I_WEAR], abs(c[C_FT]) / f_n, p[P_WEAR])
+    coef = wear_coefficient(table.user, k, law[I_WEAR], abs(c[C_FT]) / f_n, p[P_WEAR])
     sectors = law[I_SECTORS]
     share = p[P_SHARE]
     bearing = state.wear[k, 0, :sectors]
@@ -479,7 +498,7 @@ def accumulate(table, state, scratch, log, t_old, t_new, q_mid, qd_mid, snap_tim
             totals[T_FRICTION_ENERGY] -= c[C_FT] * c[C_VT] * h
             p = table.params[k]
             sliding_speed = slip_speed(
-                table.ints[k, I_FRICTION], c[C_VT], p[P_F0], p[P_F1], p[P_F2]
+                table.user, k, table.ints[k, I_FRICTION], c[C_VT], p[P_F0], p[P_F1], p[P_F2]
             )
             totals[T_SLIDING] += sliding_speed * h
         totals[T_FILM_ENERGY] += c[C_FILM_POWER] * h
@@ -525,7 +544,7 @@ def elastic_energy(table, scratch):
     for k in range(table.ints.shape[0]):
         p = table.params[k]
         energy += law_energy(
-            table.ints[k, I_NORMAL], scratch.contact[k, C_DELTA], p[P_K], p[P_EXP],
-            p[P_ESTAR], p[P_C], p[P_WIDTH],
+            table.user, k, table.ints[k, I_NORMAL], scratch.contact[k, C_DELTA], p[P_K],
+            p[P_EXP], p[P_ESTAR], p[P_C], p[P_WIDTH],
         )  # fmt: skip
     return energy

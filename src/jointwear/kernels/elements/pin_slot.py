@@ -76,11 +76,18 @@ import numpy as np
 from numba import njit
 
 from ..kinematics import point_position, rotate
-from ..laws.friction import slip_speed, tangential_force
-from ..laws.normal import damped, elastic_force
-from ..laws.normal import elastic_energy as law_energy
 from ..laws.segments import add_wear, depth_along
-from ..laws.wear import depth_at, hertz_line_contact, wear_coefficient
+from ..laws.user import (
+    NoUserLaws,
+    UserLaws,
+    damped,
+    elastic_force,
+    slip_speed,
+    tangential_force,
+    wear_coefficient,
+)
+from ..laws.user import elastic_energy as law_energy
+from ..laws.wear import depth_at, hertz_line_contact
 from .journal_geometry import apply_contact, contact_velocities, eccentricity, surface_angles
 
 # Columns of PinSlotTable.ints.
@@ -187,6 +194,7 @@ class PinSlotTable(NamedTuple):
 
     ints: np.ndarray  # (np, N_INTS) int64
     params: np.ndarray  # (np, N_PARAMS)
+    user: UserLaws | NoUserLaws  # the rows' laws registered from Python
 
 
 class PinSlotState(NamedTuple):
@@ -211,16 +219,23 @@ class PinSlotScratch(NamedTuple):
 
 
 def make_tables(
-    ints: np.ndarray, params: np.ndarray, snapshots: int
+    ints: np.ndarray,
+    params: np.ndarray,
+    snapshots: int,
+    user: UserLaws | NoUserLaws | None = None,
 ) -> tuple[PinSlotTable, PinSlotState, PinSlotLog, PinSlotScratch]:
-    """Allocate a run's arrays for the joints of ``ints`` and ``params``, unworn (Python)."""
+    """Allocate a run's arrays for the joints of ``ints`` and ``params``, unworn (Python).
+
+    ``user``: the rows' user laws (``laws.user``); None: no row has one.
+    """
+    user = NoUserLaws(rows=ints.shape[0]) if user is None else user
     n = ints.shape[0]
     ints = ints.astype(np.int64).reshape(n, N_INTS)
     counts = ints[:, [I_SEGMENTS, I_END_SECTORS, I_PIN_SECTORS]]
     cells = int(counts.max(initial=1))
     surfaces = len(SURFACES)
     return (
-        PinSlotTable(ints=ints, params=params.astype(np.float64).reshape(n, N_PARAMS)),
+        PinSlotTable(ints=ints, params=params.astype(np.float64).reshape(n, N_PARAMS), user=user),
         PinSlotState(
             contact_on=np.zeros(n, dtype=np.int64),
             impact_speed=np.zeros(n),
@@ -314,9 +329,13 @@ def evaluate(table, state, scratch, k, q, qd):
     impact_speed = max(delta_dot, p[P_MIN_SPEED])  # until the loop records the onset
     if state.contact_on[k]:
         impact_speed = state.impact_speed[k]
-    elastic = elastic_force(law[I_NORMAL], delta, p[P_K], p[P_EXP], p[P_ESTAR], p[P_C], p[P_WIDTH])
-    f_n = damped(elastic, delta_dot, impact_speed, law[I_DAMPING], p[P_CE])
-    f_t = tangential_force(law[I_FRICTION], v_t, f_n, p[P_CF], p[P_F0], p[P_F1], p[P_F2])
+    elastic = elastic_force(
+        table.user, k, law[I_NORMAL], delta, p[P_K], p[P_EXP], p[P_ESTAR], p[P_C], p[P_WIDTH]
+    )
+    f_n = damped(table.user, k, elastic, delta_dot, impact_speed, law[I_DAMPING], p[P_CE])
+    f_t = tangential_force(
+        table.user, k, law[I_FRICTION], v_t, f_n, p[P_CF], p[P_F0], p[P_F1], p[P_F2]
+    )
     out[C_FN], out[C_FT], out[C_ELASTIC] = f_n, f_t, elastic
     out[C_FX] = -f_n * nx - f_t * ny
     out[C_FY] = -f_n * ny + f_t * nx
@@ -390,7 +409,7 @@ def _wear(table, state, scratch, k, ds):
     c = scratch.contact[k]
     law = table.ints[k]
     p = table.params[k]
-    coef = wear_coefficient(law[I_WEAR], abs(c[C_FT]) / c[C_FN], p[P_WEAR])
+    coef = wear_coefficient(table.user, k, law[I_WEAR], abs(c[C_FT]) / c[C_FN], p[P_WEAR])
     volume = coef * c[C_FN] * ds
     share = p[P_SHARE]
     slot = int(c[C_SURFACE])
@@ -448,7 +467,7 @@ def accumulate(table, state, scratch, log, t_old, t_new, q_mid, qd_mid, snap_tim
             _track_peaks(totals, c)
             totals[T_FRICTION_ENERGY] -= c[C_FT] * c[C_VT] * h
             sliding_speed = slip_speed(
-                table.ints[k, I_FRICTION], c[C_VT], p[P_F0], p[P_F1], p[P_F2]
+                table.user, k, table.ints[k, I_FRICTION], c[C_VT], p[P_F0], p[P_F1], p[P_F2]
             )
             totals[T_SLIDING] += sliding_speed * h
         _track_ranges(table.ints[k], p, c, totals, h)
@@ -497,7 +516,7 @@ def elastic_energy(table, scratch):
     for k in range(table.ints.shape[0]):
         p = table.params[k]
         energy += law_energy(
-            table.ints[k, I_NORMAL], scratch.contact[k, C_DELTA], p[P_K], p[P_EXP],
-            p[P_ESTAR], p[P_C], p[P_WIDTH],
+            table.user, k, table.ints[k, I_NORMAL], scratch.contact[k, C_DELTA], p[P_K],
+            p[P_EXP], p[P_ESTAR], p[P_C], p[P_WIDTH],
         )  # fmt: skip
     return energy

@@ -43,11 +43,18 @@ import numpy as np
 from numba import njit
 
 from ..kinematics import angle, point_position
-from ..laws.friction import slip_speed, tangential_force
-from ..laws.normal import damped, elastic_force
-from ..laws.normal import elastic_energy as law_energy
 from ..laws.segments import add_wear, depth_along
-from ..laws.wear import hertz_line_contact, wear_coefficient
+from ..laws.user import (
+    NoUserLaws,
+    UserLaws,
+    damped,
+    elastic_force,
+    slip_speed,
+    tangential_force,
+    wear_coefficient,
+)
+from ..laws.user import elastic_energy as law_energy
+from ..laws.wear import hertz_line_contact
 from .point_loads import apply_force_at
 
 # Columns of SliderTable.ints.
@@ -157,6 +164,7 @@ class SliderTable(NamedTuple):
 
     ints: np.ndarray  # (ns, N_INTS) int64
     params: np.ndarray  # (ns, N_PARAMS)
+    user: UserLaws | NoUserLaws  # the rows' laws registered from Python
 
 
 class SliderState(NamedTuple):
@@ -183,15 +191,23 @@ class SliderScratch(NamedTuple):
 
 
 def make_tables(
-    ints: np.ndarray, params: np.ndarray, snapshots: int
+    ints: np.ndarray,
+    params: np.ndarray,
+    snapshots: int,
+    user: UserLaws | NoUserLaws | None = None,
 ) -> tuple[SliderTable, SliderState, SliderLog, SliderScratch]:
-    """Allocate a run's arrays for the joints of ``ints`` and ``params``, unworn (Python)."""
+    """Allocate a run's arrays for the joints of ``ints`` and ``params``, unworn (Python).
+
+    ``user``: the rows' user laws (``laws.user``); None: no row has one.
+    """
+    user = NoUserLaws(rows=ints.shape[0]) if user is None else user
     ns = ints.shape[0]
     segments = int(ints[:, I_SEGMENTS].max(initial=1))
     return (
         SliderTable(
             ints=ints.astype(np.int64).reshape(ns, N_INTS),
             params=params.astype(np.float64).reshape(ns, N_PARAMS),
+            user=user,
         ),
         SliderState(
             contact_on=np.zeros(ns * SLOTS, dtype=np.int64),
@@ -302,11 +318,13 @@ def _evaluate(table, state, scratch, k, i, q, qd):
     impact_speed = max(out[C_DDOT], p[P_MIN_SPEED])
     if state.contact_on[slot]:
         impact_speed = state.impact_speed[slot]
-    elastic = elastic_force(law[I_NORMAL], delta, p[P_K], p[P_EXP], p[P_ESTAR], p[P_H], p[P_WIDTH])
-    f_n = damped(elastic, out[C_DDOT], impact_speed, law[I_DAMPING], p[P_CE])
+    elastic = elastic_force(
+        table.user, k, law[I_NORMAL], delta, p[P_K], p[P_EXP], p[P_ESTAR], p[P_H], p[P_WIDTH]
+    )
+    f_n = damped(table.user, k, elastic, out[C_DDOT], impact_speed, law[I_DAMPING], p[P_CE])
     out[C_FN] = f_n
     out[C_FT] = tangential_force(
-        law[I_FRICTION], out[C_VT], f_n, p[P_CF], p[P_F0], p[P_F1], p[P_F2]
+        table.user, k, law[I_FRICTION], out[C_VT], f_n, p[P_CF], p[P_F0], p[P_F1], p[P_F2]
     )
     out[C_ELASTIC] = elastic
 
@@ -406,7 +424,7 @@ def _wear(table, state, k, i, c, ds):
     """Remove the wear of sliding distance ds [m] under contact i; return the volume [m^3]."""
     law = table.ints[k]
     p = table.params[k]
-    coef = wear_coefficient(law[I_WEAR], abs(c[C_FT]) / c[C_FN], p[P_WEAR])
+    coef = wear_coefficient(table.user, k, law[I_WEAR], abs(c[C_FT]) / c[C_FN], p[P_WEAR])
     volume = coef * c[C_FN] * ds
     segments = law[I_SEGMENTS]
     top = i % 2 == 0
@@ -443,7 +461,9 @@ def accumulate(table, state, scratch, log, t_old, t_new, q_mid, qd_mid, snap_tim
             totals[T_MAX_DELTA] = max(totals[T_MAX_DELTA], c[C_DELTA])
             totals[T_FRICTION_ENERGY] -= c[C_FT] * c[C_VT] * h
             p = table.params[k]
-            speeds[i] = slip_speed(table.ints[k, I_FRICTION], c[C_VT], p[P_F0], p[P_F1], p[P_F2])
+            speeds[i] = slip_speed(
+                table.user, k, table.ints[k, I_FRICTION], c[C_VT], p[P_F0], p[P_F1], p[P_F2]
+            )
             totals[T_SLIDING] += speeds[i] * h
         if touching:
             totals[T_CONTACT_TIME] += h
@@ -540,7 +560,7 @@ def elastic_energy(table, scratch):
         p = table.params[k]
         for i in range(SLOTS):
             energy += law_energy(
-                table.ints[k, I_NORMAL], scratch.contact[k, i, C_DELTA], p[P_K], p[P_EXP],
-                p[P_ESTAR], p[P_H], p[P_WIDTH],
+                table.user, k, table.ints[k, I_NORMAL], scratch.contact[k, i, C_DELTA], p[P_K],
+                p[P_EXP], p[P_ESTAR], p[P_H], p[P_WIDTH],
             )  # fmt: skip
     return energy

@@ -55,9 +55,9 @@ import numpy as np
 from numba import njit
 
 # Gauss-Legendre nodes and weights on [0, 1], for the elastic energy of Liu's law.
-_GL_X, _GL_W = np.polynomial.legendre.leggauss(12)
-_GL_X = 0.5 * (_GL_X + 1.0)
-_GL_W = 0.5 * _GL_W
+GAUSS_NODES, GAUSS_WEIGHTS = np.polynomial.legendre.leggauss(12)
+GAUSS_NODES = 0.5 * (GAUSS_NODES + 1.0)
+GAUSS_WEIGHTS = 0.5 * GAUSS_WEIGHTS
 
 
 class ElasticLaw(IntEnum):
@@ -293,11 +293,10 @@ def _energy_by_quadrature(law, delta, k, n, e_star, d_r, width):
     if delta <= 0.0:
         return 0.0
     energy = 0.0
-    for i in range(_GL_X.shape[0]):
-        t = _GL_X[i]
-        energy += (
-            _GL_W[i] * 2.0 * delta * t * elastic_force(law, delta * t * t, k, n, e_star, d_r, width)
-        )
+    for i in range(GAUSS_NODES.shape[0]):
+        t = GAUSS_NODES[i]
+        force = elastic_force(law, delta * t * t, k, n, e_star, d_r, width)
+        energy += GAUSS_WEIGHTS[i] * 2.0 * delta * t * force
     return energy
 
 
@@ -416,11 +415,17 @@ def hysteresis_factor(damping: int, c_e: float) -> float:
 def damped(
     elastic: float, delta_dot: float, delta_dot_minus: float, damping: int, c_e: float
 ) -> float:
+    """Normal force [N] with the damping law of code ``damping`` (``damped_by``)."""
+    return damped_by(elastic, delta_dot, delta_dot_minus, hysteresis_factor(damping, c_e))
+
+
+@njit(cache=True)
+def damped_by(elastic: float, delta_dot: float, delta_dot_minus: float, chi: float) -> float:
     """Normal force [N]: elastic (1 + chi delta_dot / delta_dot_minus), clamped at zero.
 
     A NaN (a law's error value) passes through the clamp.
     """
     if elastic <= 0.0 or delta_dot_minus <= 0.0:
         return 0.0 if elastic <= 0.0 else elastic
-    force = elastic * (1.0 + hysteresis_factor(damping, c_e) * delta_dot / delta_dot_minus)
+    force = elastic * (1.0 + chi * delta_dot / delta_dot_minus)
     return 0.0 if force <= 0.0 else force

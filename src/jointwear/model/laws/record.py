@@ -20,6 +20,9 @@ SHAPE_NAMES = {CONFORMAL: "a journal in its bearing", CORNER_ON_FLAT: "a corner 
 
 KERNEL_PACKAGE = "jointwear.kernels.laws"
 
+# The records of laws registered from Python (``model.laws.user``): family key -> name -> Law.
+REGISTERED: dict[str, dict[str, "Law"]] = {}
+
 
 class Key(NamedTuple):
     """A model-file key that a law reads.
@@ -145,8 +148,8 @@ class Family(NamedTuple):
 
     @property
     def by_name(self) -> dict[str, Law]:
-        """The family's laws by name."""
-        return {law.name: law for law in self.laws}
+        """The family's laws by name: the built-in ones, then those registered from Python."""
+        return {law.name: law for law in self.laws} | REGISTERED.get(self.key, {})
 
 
 def family_keys(family: Family) -> dict[str, Key]:
