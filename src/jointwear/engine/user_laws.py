@@ -216,16 +216,6 @@ def install(laws: Iterable[records.UserLaw]) -> None:
             records.register(law)
 
 
-def used_laws(model: object) -> tuple[records.UserLaw, ...]:
-    """The laws registered from Python that ``model``'s clearance joints choose."""
-    names = {
-        getattr(joint.clearance, family)
-        for joint in model.clearance_joints
-        for family in records.FAMILIES
-    }
-    return tuple(law for law in records.registered_laws() if law.name in names)
-
-
 def user_tables(model: object) -> dict[str, kernel.UserLaws | kernel.NoUserLaws]:
     """Per joint type with clearance, its rows' user laws (``kernels.laws.user``)."""
     from ..joints import KINDS

@@ -127,6 +127,15 @@ def law_name(family: Family) -> object:
 
 
 @cache
+def _law_names_table(keys: tuple[str, ...]) -> type[Table]:
+    """A table of the law-naming keys ``keys`` (``normal_law``, ...), to validate them first."""
+    families = {family.key: family for family in EVERY}
+    return create_model(
+        "LawNames", __base__=Table, **{key: (law_name(families[key]), ...) for key in keys}
+    )
+
+
+@cache
 def _own_keys_table(keys: tuple[Key, ...]) -> type[Table]:
     """A table of the own keys ``keys`` of laws registered from Python, to validate them."""
     return create_model("OwnKeys", __base__=Table, **{key.name: _key_field(key) for key in keys})
@@ -155,6 +164,17 @@ class ClearanceTable(_LawKeys):
     wear_law: law_name(WEAR) = WEAR.default
     lubrication: law_name(LUBRICATION) = LUBRICATION.default
     wear_feedback: bool = True
+
+    # pydantic runs a class's before-validators from the last defined: this one runs after
+    # _damped_default_law, and before every table's check of unknown keys (model.tables).
+    @model_validator(mode="before")
+    @classmethod
+    def _laws_known_first(cls, data: object) -> object:
+        """An unknown law name before the keys: a law not registered makes its keys unknown."""
+        if isinstance(data, dict):
+            keys = tuple(f.key for f in cls.FAMILIES if f.key in data)
+            _law_names_table(keys).model_validate({key: data[key] for key in keys})
+        return data
 
     @model_validator(mode="before")
     @classmethod

@@ -126,7 +126,8 @@ def _check_name(name: str, family: str) -> None:
     for built_in in (NORMAL, DAMPING, FRICTION, WEAR, WEAR_DISTRIBUTION, LUBRICATION):
         if any(law.name == name for law in built_in.laws):
             raise ValueError(
-                f"name: '{name}' is a built-in {built_in.key} law; choose another name"
+                f"name: '{name}' is the name of a built-in law ({built_in.key}); choose "
+                "another name"
             )
     other = _LAWS.get(name)
     if other is not None and other.family != family:
@@ -228,6 +229,14 @@ def registered(name: str) -> UserLaw | None:
 def registered_laws() -> tuple[UserLaw, ...]:
     """Every law registered from Python, in registration order."""
     return tuple(_LAWS.values())
+
+
+def used_laws(model: object) -> tuple[UserLaw, ...]:
+    """The registered laws that ``model``'s clearance joints choose."""
+    names = {
+        getattr(joint.clearance, family) for joint in model.clearance_joints for family in FAMILIES
+    }
+    return tuple(law for law in _LAWS.values() if law.name in names)
 
 
 def own_keys() -> dict[str, Key]:

@@ -59,6 +59,11 @@ class CaseTask:
     record
         Settings written to ``case.json`` with the outcome (overrides, cycles, the resolved
         model), by which a later run of the sweep knows the case is done.
+    laws
+        The laws registered from Python that the case's model chooses: a worker registers
+        them before it loads the model (``engine.user_laws.install``). They pickle with
+        their compiled functions (numba pickles a function by value when it was defined in
+        the script or notebook, by reference when imported from a module).
     """
 
     case: str
@@ -67,6 +72,7 @@ class CaseTask:
     overrides: tuple[str, ...]
     cycles: int | None
     record: dict
+    laws: tuple = ()
 
 
 Outcome = dict  # status, error, wall_s [s], summary (the run's summary.json, or {})
@@ -87,6 +93,10 @@ def run_case(task: CaseTask) -> Outcome:
     try:
         make_folder(folder)
         remove(folder / CASE_FILE)  # until rewritten, the case is not done
+        if task.laws:
+            from ...engine.user_laws import install
+
+            install(task.laws)
         summary = _simulate(task)
         status = summary.get("status", SUCCESS)
         error = "" if status == SUCCESS else summary.get("message", status)

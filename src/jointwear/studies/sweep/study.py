@@ -32,6 +32,7 @@ from ...engine.status import NOT_RUN, SUCCESS
 from ...io import check_folder, claim, make_folder, write_atomic, write_text
 from ...model import Model, ModelError, load_model
 from ...model.files import SAVED_MODEL
+from ...model.laws.user import used_laws
 from ..life.settings import MAX_CYCLES
 from .cases import Case, check_link, check_vary, make_cases, si_value, value_text
 from .runners import CaseTask, Outcome, read_record, run_dask, run_local, run_serial
@@ -298,6 +299,7 @@ def _task(
         overrides=every,
         cycles=cycles,
         record=record,
+        laws=used_laws(model),
     )
 
 
