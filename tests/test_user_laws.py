@@ -1,6 +1,6 @@
 """Laws registered from Python (``jointwear.register_law``) against their built-in twins.
 
-The independent answer is the built-in law: a user's re-implementation (tests/user_laws.py,
+The independent answer is the built-in law: a user's re-implementation (examples/user_laws.py,
 written from the papers' formulas) must give its results. Each twin's arithmetic is the
 built-in law's, operation for operation, so the runs agree to the last bit; the elastic
 energy, which the user Hertz law leaves to quadrature, agrees to round-off (12-point
@@ -8,6 +8,7 @@ Gauss-Legendre is exact for K delta^1.5, whose integrand is a polynomial in t af
 s = delta t^2).
 """
 
+import importlib.util
 import math
 import os
 import tomllib
@@ -18,7 +19,6 @@ import pandas as pd
 import pytest
 from numba import njit
 from typer.testing import CliRunner
-from user_laws import TWIN_KEYS, register_twins, unregister_twins
 
 import jointwear as jw
 from jointwear.cli import app
@@ -29,6 +29,21 @@ from jointwear.model.laws import user as records
 
 ROOT = Path(__file__).parents[1]
 FOURBAR = ROOT / "examples" / "flores2009_fourbar.toml"
+
+
+def _example(name: str) -> object:
+    """An example script as a module that is not importable by name (as a notebook's code).
+
+    So numba pickles its functions by value, and a Dask worker gets them with the cases.
+    """
+    spec = importlib.util.spec_from_file_location(name, ROOT / "examples" / f"{name}.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+TWINS = _example("user_laws")
+TWIN_KEYS = TWINS.KEYS
 PAPER_WEAR = 'wear_coefficient = "8e-14 1/Pa"     # Archard, dimensional\n'
 T_END = 0.05  # [s]: two crank turns, four impacts and the sliding after them
 CLEARANCE = "joints.coupler_follower.clearance"
@@ -37,9 +52,9 @@ CLEARANCE = "joints.coupler_follower.clearance"
 @pytest.fixture(scope="module", autouse=True)
 def twins():
     """The user twins, registered for this module's tests only."""
-    register_twins()
+    TWINS.register()
     yield
-    unregister_twins()
+    TWINS.unregister()
 
 
 def fourbar_text(laws: dict[str, str], keys: dict[str, str]) -> str:
@@ -55,12 +70,7 @@ def parse(text: str) -> jw.Model:
     return jw.parse_model(tomllib.loads(text))
 
 
-USER_LAWS = {
-    "normal_law": "user_hertz",
-    "damping": "user_lankarani_nikravesh",
-    "friction_law": "user_ambrosio",
-    "wear_law": "user_archard",
-}
+USER_LAWS = {family: twin for family, (_, twin) in TWINS.LAWS.items()}
 
 
 @pytest.fixture(scope="module")
@@ -135,7 +145,7 @@ def test_results_of_a_user_law_load_while_it_is_registered(fourbar_runs):
         )
         assert "jointwear.register_law" in str(error.value)
     finally:
-        register_twins()
+        TWINS.register()
 
 
 def test_check_lists_a_user_law_with_its_keys(tmp_path):
@@ -143,7 +153,13 @@ def test_check_lists_a_user_law_with_its_keys(tmp_path):
     path.write_text(fourbar_text(USER_LAWS, {**TWIN_KEYS, "still_speed": "0.1 mm/s"}))
     result = CliRunner().invoke(app, ["check", str(path)], env={"COLUMNS": "200"})
     assert result.exit_code == 0, result.output
-    for text in ("user_ambrosio", "still_speed", "0.0001", "m/s", "user_hertz: K delta^n, as hertz"):
+    for text in (
+        "user_ambrosio",
+        "still_speed",
+        "0.0001",
+        "m/s",
+        "user_hertz: K delta^n, as hertz",
+    ):
         assert text in result.output
     # The stiffness by central difference, against hertz's K n delta^(n - 1).
     built_in = jw.load_model(FOURBAR).joint("coupler_follower").clearance
