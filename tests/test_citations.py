@@ -28,7 +28,7 @@ NOTHING_TO_CITE = "none"  # a law that is the absence of one (no damping, a dry 
 
 def _registries():
     """(model key, names it accepts) for every choice the model file offers."""
-    yield from ((law_key, tuple(laws)) for law_key, laws in FAMILIES.values())
+    yield from ((family.key, tuple(family.by_name)) for family in FAMILIES.values())
     yield "wear_distribution", tuple(WEAR_DISTRIBUTIONS)
 
 
