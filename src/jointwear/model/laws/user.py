@@ -34,11 +34,11 @@ from itertools import count
 from typing import NamedTuple
 
 from ...units import unit_of
+from . import EVERY
 from .friction import FRICTION
-from .lubrication import LUBRICATION
 from .normal import DAMPING, DEPTH_LIMIT, NORMAL, RESTITUTION
 from .record import PENETRATION, REGISTERED, Family, Key, Law, Range, pack_in_order
-from .wear import WEAR, WEAR_DISTRIBUTION
+from .wear import WEAR
 
 USER_CODE = 100  # law codes from here on are registered laws (kernels.laws.user.USER_CODE)
 N_KEYS = 6  # most keys of a user law's own (kernels.laws.user.N_KEYS)
@@ -49,21 +49,14 @@ class Role(NamedTuple):
 
     name: str
     arguments: tuple[str, ...]
-    required: bool = False
 
 
-ROLES: dict[str, tuple[Role, ...]] = {
-    NORMAL.key: (
-        Role("force", ("delta", "k", "n", "e_star", "d_r", "width"), required=True),
-        Role("energy", ("delta", "k", "n", "e_star", "d_r", "width")),
-        Role("stiffness", ("delta", "k", "n", "e_star", "d_r", "width")),
-    ),
-    DAMPING.key: (Role("hysteresis", ("c_e",), required=True),),
-    FRICTION.key: (
-        Role("force", ("v_t", "f_n", "c_f"), required=True),
-        Role("sliding", ("v_t",)),
-    ),
-    WEAR.key: (Role("coefficient", ("mu",), required=True),),
+_CONTACT = ("delta", "k", "n", "e_star", "d_r", "width")
+ROLES: dict[str, tuple[Role, ...]] = {  # per family, the required function first
+    NORMAL.key: (Role("force", _CONTACT), Role("energy", _CONTACT), Role("stiffness", _CONTACT)),
+    DAMPING.key: (Role("hysteresis", ("c_e",)),),
+    FRICTION.key: (Role("force", ("v_t", "f_n", "c_f")), Role("sliding", ("v_t",))),
+    WEAR.key: (Role("coefficient", ("mu",)),),
 }
 FAMILIES: dict[str, Family] = {f.key: f for f in (NORMAL, DAMPING, FRICTION, WEAR)}
 _BY_TITLE = {f.title: f.key for f in FAMILIES.values()}  # "friction" -> "friction_law"
@@ -74,7 +67,7 @@ class UserLaw(NamedTuple):
 
     family: str  # the model-file key that chooses it: normal_law, damping, ...
     name: str
-    functions: tuple[tuple[str, Callable], ...]  # (role, compiled function), the required first
+    functions: tuple[tuple[str, Callable], ...]  # (role, compiled function), ROLES' first first
     keys: tuple[Key, ...]  # its own keys, in the order its functions take their values
     summary: str = ""
 
@@ -123,7 +116,7 @@ def _check_name(name: str, family: str) -> None:
             f"name: {name!r} is not a law name; use lowercase letters, digits and _, starting "
             "with a letter"
         )
-    for built_in in (NORMAL, DAMPING, FRICTION, WEAR, WEAR_DISTRIBUTION, LUBRICATION):
+    for built_in in EVERY:
         if any(law.name == name for law in built_in.laws):
             raise ValueError(
                 f"name: '{name}' is the name of a built-in law ({built_in.key}); choose "
