@@ -5,6 +5,8 @@ values under its ``[set]`` table changed, each dotted key addressing one value a
 ``jointwear run --set`` (array items by name). Beside them it may give its own ``name`` and
 ``description``; the name defaults to the file's stem.
 
+A table function's ``file`` is named relative to the file that names it.
+
 A results folder stands for the model it was run with: its ``model.json``, which every run
 writes (the resolved model, values in SI).
 """
@@ -16,6 +18,7 @@ from pathlib import Path
 
 from .errors import TOO_DEEP, TOO_LONG, ModelError
 from .overrides import apply_changes
+from .table_files import resolve_files
 
 EXTENDING_KEYS = ("extends", "set", "name", "description")
 MAX_FILE_BYTES = 10**7  # a model file larger than this is not one
@@ -76,7 +79,7 @@ def read_saved_model(folder: Path) -> dict:
 
 
 def _resolve(path: Path, chain: tuple[Path, ...]) -> dict:
-    data = _read_toml(path)
+    data = resolve_files(_read_toml(path), path.parent)
     if "extends" not in data:
         if "set" in data:
             raise ModelError([f"{path}: set: only a file with 'extends' may change values"])

@@ -12,6 +12,7 @@ from typing import Annotated
 
 from pydantic import Field, ValidationError, model_validator
 
+from .arguments import argument_problems
 from .errors import TOO_DEEP, ModelError, from_validation_error
 from .files import read_model_data
 from .functions import longest_period
@@ -49,6 +50,8 @@ class Model(Table):
         problems = reference_problems(
             self.ground, self.bodies, self.joints, self.drivers, self.forces, self.events
         )
+        if not problems:
+            problems = argument_problems(self.drivers, self.bodies, self.joints, self.forces)
         if problems:
             raise ModelError(problems)
         return self

@@ -16,6 +16,7 @@ from ..units import (
     Acceleration2,
     Angle,
     AngularSpeed,
+    Area,
     Damping,
     Inertia,
     Length,
@@ -28,7 +29,7 @@ from ..units import (
     Velocity2,
     to_si,
 )
-from .functions import AngleFunction, DistanceFunction, ForceValue, TorqueValue
+from .functions import AngleFunction, DistanceFunction, ForceValue, PressureValue, TorqueValue
 from .tables import Name, Number, Table, one_of
 
 INTEGRATORS: dict[str, Method] = {"dopri5": Method.DOPRI5, "abm": Method.ABM}
@@ -90,7 +91,26 @@ class DistanceDriver(Table):
 MAX_GRAVITY = 1e7  # [m/s^2] a million g
 
 
-class Gravity(Table):
+class LoadTable(Table):
+    """An applied load: whether it does work from outside, and its functions by key."""
+
+    does_work: ClassVar[bool] = False
+    FUNCTION_KEYS: ClassVar[tuple[str, ...]] = ()  # its keys whose values may be functions
+
+    @property
+    def functions(self) -> dict[str, object]:
+        """Its values that may be functions (a constant, or a function table), by key path."""
+        found = {}
+        for key in self.FUNCTION_KEYS:
+            value = getattr(self, key)
+            if isinstance(value, tuple):
+                found |= {f"{key}[{i}]": item for i, item in enumerate(value)}
+            else:
+                found[key] = value
+        return found
+
+
+class Gravity(LoadTable):
     """Uniform gravitational acceleration [m/s^2] on every body."""
 
     type: Literal["gravity"] = "gravity"
@@ -108,10 +128,12 @@ class Gravity(Table):
         return self
 
 
-class PointForce(Table):
+class PointForce(LoadTable):
     """Force [N] in global components at a named point of a body."""
 
     kind: ClassVar = ForceKind.POINT_FORCE
+    does_work: ClassVar[bool] = True
+    FUNCTION_KEYS: ClassVar[tuple[str, ...]] = ("force",)
     type: Literal["point_force"] = "point_force"
     name: Name | None = None
     body: str
@@ -119,17 +141,51 @@ class PointForce(Table):
     force: tuple[ForceValue, ForceValue]
 
 
-class AppliedTorque(Table):
+class AppliedTorque(LoadTable):
     """Torque [N m] on a body, counter-clockwise positive."""
 
     kind: ClassVar = ForceKind.TORQUE
+    does_work: ClassVar[bool] = True
+    FUNCTION_KEYS: ClassVar[tuple[str, ...]] = ("torque",)
     type: Literal["torque"] = "torque"
     name: Name | None = None
     body: str
     torque: TorqueValue
 
 
-class SpringDamper(Table):
+class JointForce(LoadTable):
+    """Force [N] along a translational joint's axis between its two bodies.
+
+    Positive pushes the second body along the axis (the slide grows) and the first body back,
+    both at the second body's joint point: a gas spring, a damper curve, an actuator.
+    """
+
+    kind: ClassVar = ForceKind.JOINT_FORCE
+    does_work: ClassVar[bool] = True
+    FUNCTION_KEYS: ClassVar[tuple[str, ...]] = ("force",)
+    type: Literal["joint_force"] = "joint_force"
+    name: Name | None = None
+    joint: str
+    force: ForceValue
+
+
+class JointPressure(LoadTable):
+    """A pressure [Pa] on an area [m^2], acting as a ``JointForce`` of pressure times area.
+
+    The gas force on a piston (its crown's area), the oil force in a hydraulic cylinder.
+    """
+
+    kind: ClassVar = ForceKind.JOINT_PRESSURE
+    does_work: ClassVar[bool] = True
+    FUNCTION_KEYS: ClassVar[tuple[str, ...]] = ("pressure",)
+    type: Literal["joint_pressure"] = "joint_pressure"
+    name: Name | None = None
+    joint: str
+    area: Annotated[Area, Gt(0)]
+    pressure: PressureValue
+
+
+class SpringDamper(LoadTable):
     """Translational spring-damper along the line between two points."""
 
     kind: ClassVar = ForceKind.SPRING_DAMPER
@@ -142,7 +198,7 @@ class SpringDamper(Table):
     free_length: Annotated[Length, Ge(0)]
 
 
-class RotationalSpringDamper(Table):
+class RotationalSpringDamper(LoadTable):
     """Rotational spring-damper on the relative angle phi_2 - phi_1."""
 
     kind: ClassVar = ForceKind.ROTATIONAL_SPRING_DAMPER
@@ -157,7 +213,13 @@ class RotationalSpringDamper(Table):
 Joint = Annotated[Union[tuple(kind.schema for kind in KINDS)], Field(discriminator="type")]  # noqa: UP007
 Driver = Annotated[AngleDriver | DistanceDriver, Field(discriminator="type")]
 Load = Annotated[
-    Gravity | PointForce | AppliedTorque | SpringDamper | RotationalSpringDamper,
+    Gravity
+    | PointForce
+    | AppliedTorque
+    | JointForce
+    | JointPressure
+    | SpringDamper
+    | RotationalSpringDamper,
     Field(discriminator="type"),
 ]
 # Solver times: above the resolution of float times near 1 s, and below 30,000 years.
