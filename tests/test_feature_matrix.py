@@ -118,19 +118,34 @@ period = "720 deg"
 [[forces]]
 type = "torque"
 body = "rod"
-torque = { type = "fourier", period = "12 ms", mean = "0.01 N*m", cosine = [0.02, 0.01], sine = [0.005] }
+[forces.torque]
+type = "fourier"
+period = "12 ms"
+mean = "0.01 N*m"
+cosine = [0.02, 0.01]
+sine = [0.005]
 
 [[forces]]
 type = "joint_force"
 name = "gas_spring"
 joint = "slider_guide"
-force = { type = "table", argument = "slider_guide.slide", x = [0.0, 0.3], y = ["50 N", "20 N"], interpolation = "linear" }
+[forces.force]
+type = "table"
+argument = "slider_guide.slide"
+x = [0.0, 0.3]
+y = ["50 N", "20 N"]
+interpolation = "linear"
 
 [[forces]]
 type = "torque"
 name = "motor_curve"
 body = "crank"
-torque = { type = "table", argument = "crank.angular_speed", x = ["0 rpm", "10000 rpm"], y = [2, 0], interpolation = "cubic" }
+[forces.torque]
+type = "table"
+argument = "crank.angular_speed"
+x = ["0 rpm", "10000 rpm"]
+y = [2, 0]
+interpolation = "cubic"
 """
 
 ANGLE_DRIVERS = {  # the crank's driver as each angle function type
