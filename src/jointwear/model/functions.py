@@ -20,7 +20,17 @@ _RateT = TypeVar("_RateT")
 
 
 class ConstantSpeed(Table, Generic[_RateT, _T]):
-    """f(t) = initial + speed t; `initial` None means the value at the initial pose guess."""
+    """f(t) = initial + speed t, a driver's function.
+
+    Built in Python, its values take the units of the driver it is given to (checked there).
+
+    Parameters
+    ----------
+    speed
+        [rad/s] for an angle driver, [m/s] for a distance driver.
+    initial
+        f(0) [rad or m]; None: the driven coordinate at the initial pose guess.
+    """
 
     type: Literal["constant_speed"] = "constant_speed"
     speed: _RateT
@@ -28,7 +38,13 @@ class ConstantSpeed(Table, Generic[_RateT, _T]):
 
 
 class Polynomial(Table):
-    """f(t) = sum_k coefficients[k] t^k, SI coefficients."""
+    """f(t) = sum_k coefficients[k] t^k, t in [s].
+
+    Parameters
+    ----------
+    coefficients
+        c_0 ... c_7, plain SI numbers: [unit of f / s^k] (rad, m, N or N m over s^k).
+    """
 
     kind: ClassVar = FunctionKind.POLYNOMIAL
     type: Literal["polynomial"] = "polynomial"
@@ -36,7 +52,20 @@ class Polynomial(Table):
 
 
 class Harmonic(Table, Generic[_T]):
-    """f(t) = offset + amplitude sin(angular_frequency t + phase)."""
+    """f(t) = offset + amplitude sin(angular_frequency t + phase), t in [s].
+
+    Built in Python, its offset and amplitude take the units of where it is given (an angle
+    driver [rad], a distance driver [m], a force component [N], a torque [N m]; checked there).
+
+    Parameters
+    ----------
+    offset, amplitude
+        In the units of f.
+    angular_frequency
+        [rad/s] (``"Hz"`` is refused: cycles or radians per second?).
+    phase
+        [rad].
+    """
 
     kind: ClassVar = FunctionKind.HARMONIC
     type: Literal["harmonic"] = "harmonic"
