@@ -32,7 +32,11 @@ ModelPath = Annotated[
 ]
 Overrides = Annotated[
     list[str] | None,
-    typer.Option("--set", help="Override a model value: dotted.path=value (repeatable)."),
+    typer.Option(
+        "--set",
+        help="Override a model value: dotted.path=value; dotted.path= removes the key "
+        "(repeatable).",
+    ),
 ]
 Animation = Annotated[
     bool,

@@ -100,7 +100,7 @@ class ClearanceTable(_LawKeys):
     element kind's table gives its ``contact`` and the law families it chooses from.
     docs/model-format.md lists every key with its default and bounds.
 
-    Parameters
+    Attributes
     ----------
     width
         Length of the contact along the joint's axis [m].

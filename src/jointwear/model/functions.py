@@ -24,7 +24,7 @@ class ConstantSpeed(Table, Generic[_RateT, _T]):
 
     Built in Python, its values take the units of the driver it is given to (checked there).
 
-    Parameters
+    Attributes
     ----------
     speed
         [rad/s] for an angle driver, [m/s] for a distance driver.
@@ -40,7 +40,7 @@ class ConstantSpeed(Table, Generic[_RateT, _T]):
 class Polynomial(Table):
     """f(t) = sum_k coefficients[k] t^k, t in [s].
 
-    Parameters
+    Attributes
     ----------
     coefficients
         c_0 ... c_7, plain SI numbers: [unit of f / s^k] (rad, m, N or N m over s^k).
@@ -57,7 +57,7 @@ class Harmonic(Table, Generic[_T]):
     Built in Python, its offset and amplitude take the units of where it is given (an angle
     driver [rad], a distance driver [m], a force component [N], a torque [N m]; checked there).
 
-    Parameters
+    Attributes
     ----------
     offset, amplitude
         In the units of f.

@@ -38,7 +38,7 @@ class Model(Table):
     file's keys, it is checked as a file is, names between tables too, and raises
     ``ModelError`` with the same lines (docs/python-models.md).
 
-    Parameters
+    Attributes
     ----------
     name
         The model's name.

@@ -46,7 +46,7 @@ MAX_WEAR_SNAPSHOTS = 10_000  # each holds every sector of every clearance joint
 class Ground(Table):
     """Fixed points of the ground, named by ``"ground"`` in joints.
 
-    Parameters
+    Attributes
     ----------
     points
         Name -> (x, y) [m], global coordinates.
@@ -58,7 +58,7 @@ class Ground(Table):
 class Body(Table):
     """A moving rigid body; `position`, `angle` and velocities are initial guesses.
 
-    Parameters
+    Attributes
     ----------
     name
         Its name (letters, digits and _, starting with a letter; not ``"ground"``).
@@ -92,7 +92,7 @@ class Body(Table):
 class AngleDriver(Table):
     """Prescribes the angle of `body` relative to `relative_to` [rad].
 
-    Parameters
+    Attributes
     ----------
     name
         The driver's name (its reaction torque is the column ``torque_<name>``).
@@ -116,7 +116,7 @@ class AngleDriver(Table):
 class DistanceDriver(Table):
     """Prescribes the slide of translational joint `joint` [m].
 
-    Parameters
+    Attributes
     ----------
     name
         The driver's name (its reaction force is the column ``force_<name>``).
@@ -143,7 +143,7 @@ MAX_GRAVITY = 1e7  # [m/s^2] a million g
 class Gravity(Table):
     """Uniform gravitational acceleration on every body.
 
-    Parameters
+    Attributes
     ----------
     acceleration
         (ax, ay) [m/s^2], global, e.g. ``(0.0, "-9.81 m/s^2")``.
@@ -169,7 +169,7 @@ class Gravity(Table):
 class PointForce(Table):
     """Force at a named point of a body.
 
-    Parameters
+    Attributes
     ----------
     body, point
         The body and one of its points.
@@ -191,7 +191,7 @@ class PointForce(Table):
 class AppliedTorque(Table):
     """Torque on a body, counter-clockwise positive.
 
-    Parameters
+    Attributes
     ----------
     body
         The body.
@@ -211,7 +211,7 @@ class AppliedTorque(Table):
 class SpringDamper(Table):
     """Translational spring-damper along the line between two points.
 
-    Parameters
+    Attributes
     ----------
     bodies, points
         The two bodies (``"ground"`` allowed) and a point of each.
@@ -238,7 +238,7 @@ class SpringDamper(Table):
 class RotationalSpringDamper(Table):
     """Rotational spring-damper on the relative angle phi_2 - phi_1.
 
-    Parameters
+    Attributes
     ----------
     bodies
         The two bodies (``"ground"`` allowed).
@@ -274,7 +274,7 @@ SolverTime = Annotated[Time, Ge(1e-15), Le(1e12)]
 class Solver(Table):
     """Integration and output settings (docs/model-format.md, ``solver``).
 
-    Parameters
+    Attributes
     ----------
     integrator
         ``"abm"`` (Adams-Bashforth-Moulton) or ``"dopri5"`` (Dormand-Prince 5(4)).
@@ -367,7 +367,7 @@ class Solver(Table):
 class Event(Table):
     """Crossing of a body's x or y [m] or phi [rad] through `value`.
 
-    Parameters
+    Attributes
     ----------
     name
         The event's name.

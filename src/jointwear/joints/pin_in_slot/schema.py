@@ -46,7 +46,7 @@ class PinInSlotClearance(ClearanceTable):
     Material pairs are [slot, pin]; the keys every clearance table has are those of
     ``ClearanceTable`` (width [m], moduli [Pa], laws and their keys).
 
-    Parameters
+    Attributes
     ----------
     pin_radius
         R_p [m].
@@ -141,7 +141,7 @@ class PinInSlotJoint(JointTable):
     With it, `bodies[0]` has the slot and `bodies[1]` the pin, which touch through contact
     forces instead of the constraint.
 
-    Parameters
+    Attributes
     ----------
     name
         The joint's name.

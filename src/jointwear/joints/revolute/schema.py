@@ -26,7 +26,7 @@ class RevoluteClearance(ClearanceTable):
     Material pairs are [bearing, journal]; the keys every clearance table has are those of
     ``ClearanceTable`` (width [m], moduli [Pa], laws and their keys).
 
-    Parameters
+    Attributes
     ----------
     bearing_radius
         R_B, radius of the hole [m].
@@ -123,7 +123,7 @@ class RevoluteJoint(JointTable):
     Ideal without `clearance`; with it, `bodies[0]` has the bearing and `bodies[1]` the
     journal, and the joint acts through contact forces instead of constraints.
 
-    Parameters
+    Attributes
     ----------
     name
         The joint's name.

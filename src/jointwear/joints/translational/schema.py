@@ -33,7 +33,7 @@ class TranslationalClearance(ClearanceTable):
     Material pairs are [guide, slider]; the keys every clearance table has are those of
     ``ClearanceTable`` (width [m], moduli [Pa], laws and their keys).
 
-    Parameters
+    Attributes
     ----------
     slider_length, slider_height
         The slider's size along and across the axis [m].
@@ -129,7 +129,7 @@ class TranslationalJoint(JointTable):
     `points[0]`) and `bodies[1]` the slider (centred on `points[1]`), which touch through
     contact forces instead of constraints.
 
-    Parameters
+    Attributes
     ----------
     name
         The joint's name.
