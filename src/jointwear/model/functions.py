@@ -47,7 +47,17 @@ MAX_HARMONICS = 1000
 
 
 class ConstantSpeed(Table, Generic[_RateT, _T]):
-    """f(t) = initial + speed t; `initial` None means the value at the initial pose guess."""
+    """f(t) = initial + speed t, a driver's function.
+
+    Built in Python, its values take the units of the driver it is given to (checked there).
+
+    Attributes
+    ----------
+    speed
+        [rad/s] for an angle driver, [m/s] for a distance driver.
+    initial
+        f(0) [rad or m]; None: the driven coordinate at the initial pose guess.
+    """
 
     type: Literal["constant_speed"] = "constant_speed"
     speed: _RateT
@@ -55,7 +65,13 @@ class ConstantSpeed(Table, Generic[_RateT, _T]):
 
 
 class Polynomial(Table):
-    """f(t) = sum_k coefficients[k] t^k, SI coefficients."""
+    """f(t) = sum_k coefficients[k] t^k, t in [s].
+
+    Attributes
+    ----------
+    coefficients
+        c_0 ... c_7, plain SI numbers: [unit of f / s^k] (rad, m, N or N m over s^k).
+    """
 
     kind: ClassVar = FunctionKind.POLYNOMIAL
     type: Literal["polynomial"] = "polynomial"
@@ -63,7 +79,20 @@ class Polynomial(Table):
 
 
 class Harmonic(Table, Generic[_T]):
-    """f(t) = offset + amplitude sin(angular_frequency t + phase)."""
+    """f(t) = offset + amplitude sin(angular_frequency t + phase), t in [s].
+
+    Built in Python, its offset and amplitude take the units of where it is given (an angle
+    driver [rad], a distance driver [m], a force component [N], a torque [N m]; checked there).
+
+    Attributes
+    ----------
+    offset, amplitude
+        In the units of f.
+    angular_frequency
+        [rad/s] (``"Hz"`` is refused: cycles or radians per second?).
+    phase
+        [rad].
+    """
 
     kind: ClassVar = FunctionKind.HARMONIC
     type: Literal["harmonic"] = "harmonic"
@@ -141,10 +170,32 @@ def _dimension(key: str, index: int, item: object, value: object) -> str | None:
 
 
 class TableFunction(FunctionOfArgument, Generic[_T]):
-    """f(x) interpolated in a table of points (x_i, y_i), x increasing; SI after validation.
+    """f(x) interpolated in a table of points (x_i, y_i), x increasing; SI once validated.
 
-    ``file`` (a CSV file; ``table_files``) and the units ``x_unit`` and ``y_unit`` of plain
-    numbers are read into ``x`` and ``y`` when the table is validated, and then cleared.
+    ``file``, ``columns``, ``x_unit`` and ``y_unit`` are read into ``x`` and ``y`` when the
+    table is validated, and then cleared. Built in Python, y takes the units of where the
+    table is given (a torque [N m], a pressure [Pa], ...; checked there).
+
+    Attributes
+    ----------
+    argument
+        ``"time"`` (default), a driver's name, ``"<body>.angle"``, ``"<body>.angular_speed"``,
+        ``"<joint>.slide"`` or ``"<joint>.slide_speed"``.
+    x, y
+        The points: x in the argument's units, increasing; y in the units of f. Numbers are
+        SI, or in ``x_unit`` and ``y_unit`` when given; strings carry their own units.
+    interpolation
+        ``"pchip"`` (default: monotone between points, no overshoot), ``"cubic"`` (a
+        not-a-knot spline, periodic when ``period`` is given) or ``"linear"``.
+    period
+        In the argument's units (``"720 deg"``): the table repeats. Without it the argument
+        must stay within the points (checked before a run for time and drivers).
+    file, columns
+        A CSV file (relative to the model file) whose header names each column with its unit
+        (``crank angle [deg]``); ``columns`` names the x and y columns (default: the first
+        two).
+    source
+        The file the points were read from.
     """
 
     kind: ClassVar = FunctionKind.SPLINE
@@ -219,7 +270,19 @@ def _with_unit(value: object, unit: str) -> object:
 
 
 class Fourier(FunctionOfArgument, Generic[_T]):
-    """f(x) = mean + sum_k cosine[k-1] cos(2 pi k x / period) + sine[k-1] sin(2 pi k x / period)."""
+    """f(x) = mean + sum_k a_k cos(2 pi k x / period) + b_k sin(2 pi k x / period).
+
+    Attributes
+    ----------
+    argument
+        As a ``TableFunction``'s.
+    period
+        The base period, in the argument's units (``"12 ms"``, ``"720 deg"``).
+    mean
+        In the units of f.
+    cosine, sine
+        a_1, a_2, ... and b_1, b_2, ... in the units of f (at most 1000 each).
+    """
 
     kind: ClassVar = FunctionKind.FOURIER
     type: Literal["fourier"] = "fourier"
