@@ -41,6 +41,7 @@ EXAMPLE_END = {
     "slider_crank_clearance": 0.006,
     "slider_crank_piston_clearance": 0.006,
     "slotted_link": 0.02,
+    "single_cylinder_engine": 0.01,
 }
 
 PERIODIC_LOADS = """
@@ -230,6 +231,8 @@ def _models() -> dict[str, tuple[str, float]]:
 
 def _ending_at(text: str, end: float) -> str:
     """The model text with its solver's end time set to ``end`` [s], to be read anywhere."""
+    for table in re.findall(r'(?m)^file = "(.*)"', text):  # a table's points, beside it
+        text = text.replace(f'file = "{table}"', f'file = "{EXAMPLES / table}"')
     extends = re.search(r'(?m)^extends = "(.*)"$', text)
     if extends:  # a file named relative to the example's folder; its changes in [set]
         text = text.replace(extends[1], str(EXAMPLES / extends[1]))
