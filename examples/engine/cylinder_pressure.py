@@ -102,6 +102,7 @@ def pressure_table(heat: float) -> tuple[np.ndarray, np.ndarray]:
 
 
 def main() -> None:
+    """Fit the heat input to the peak, write the table, print its landmarks."""
     heat = brentq(lambda q: peak(q) - PEAK, 10.0, 2000.0, xtol=1e-9)
     angles, pressures = pressure_table(heat)
     out = Path(__file__).with_suffix(".csv")
