@@ -23,6 +23,7 @@ from scipy.integrate import trapezoid
 import jointwear as jw
 
 EXAMPLE = Path(__file__).parents[1] / "examples" / "single_cylinder_engine.toml"
+GUIDE, SKIRT = ("guide_top", "guide_bottom"), ("slider_top", "slider_bottom")
 
 
 def headline(results: jw.Results) -> dict[str, str]:
@@ -49,17 +50,15 @@ def headline(results: jw.Results) -> dict[str, str]:
         "wrist pin: largest force": f"{pin['max_contact_force_n'] / 1e3:.4g} kN",
         "gas work per cycle": f"{work:.1f} J (mean {work / cycle / 1e3:.2f} kW)",
         "crank: mean driver torque": f"{driver:.2f} N m",
-        "deepest wear per cycle, liner": _per_cycle(wear, ("guide_top", "guide_bottom"), span,
-                                                    cycle, liner),  # fmt: skip
-        "deepest wear per cycle, skirt": _per_cycle(wear, ("slider_top", "slider_bottom"),
-                                                    span, cycle, liner),  # fmt: skip
+        "deepest wear per cycle, liner": _per_cycle(wear, GUIDE, span / cycle, liner),
+        "deepest wear per cycle, skirt": _per_cycle(wear, SKIRT, span / cycle, liner),
     }
 
 
-def _per_cycle(wear: dict, sides: tuple[str, str], span: float, cycle: float, joint) -> str:
+def _per_cycle(wear: dict, sides: tuple[str, str], cycles: float, joint: dict) -> str:
     side = max(sides, key=wear.get)
     where = joint[f"max_wear_position_{side}_m"] * 1e3
-    per = wear[side] / (span / cycle) * 1e9
+    per = wear[side] / cycles * 1e9
     return f"{per:.3g} nm ({side}, {where:+.1f} mm)"
 
 
