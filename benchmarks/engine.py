@@ -50,8 +50,8 @@ def headline(results: jw.Results) -> dict[str, str]:
         "wrist pin: largest force": f"{pin['max_contact_force_n'] / 1e3:.4g} kN",
         "gas work per cycle": f"{work:.1f} J (mean {work / cycle / 1e3:.2f} kW)",
         "crank: mean driver torque": f"{driver:.2f} N m",
-        "deepest wear per cycle, liner": _per_cycle(wear, GUIDE, span / cycle, liner),
-        "deepest wear per cycle, skirt": _per_cycle(wear, SKIRT, span / cycle, liner),
+        "deepest wear per cycle, liner": _per_cycle(wear, GUIDE, df["time"].iloc[-1] / cycle, liner),
+        "deepest wear per cycle, skirt": _per_cycle(wear, SKIRT, df["time"].iloc[-1] / cycle, liner),
     }
 
 
