@@ -38,7 +38,7 @@ def headline(results: jw.Results) -> dict[str, str]:
     axis_speed = -steady["vy_piston"]  # the liner's axis points down
     work = trapezoid(steady["load_gas_force"] * axis_speed, steady["time"]) / cycles
     driver = trapezoid(steady["torque_crank_angle"], steady["time"]) / (cycles * cycle)
-    span = steady["time"].iloc[-1] - steady["time"].iloc[0]
+    run_cycles = df["time"].iloc[-1] / cycle  # the wear is the whole run's
     surfaces = ("guide_top", "guide_bottom", "slider_top", "slider_bottom")
     wear = {s: liner[f"max_wear_depth_{s}_m"] for s in surfaces}
     return {
@@ -50,8 +50,8 @@ def headline(results: jw.Results) -> dict[str, str]:
         "wrist pin: largest force": f"{pin['max_contact_force_n'] / 1e3:.4g} kN",
         "gas work per cycle": f"{work:.1f} J (mean {work / cycle / 1e3:.2f} kW)",
         "crank: mean driver torque": f"{driver:.2f} N m",
-        "deepest wear per cycle, liner": _per_cycle(wear, GUIDE, df["time"].iloc[-1] / cycle, liner),
-        "deepest wear per cycle, skirt": _per_cycle(wear, SKIRT, df["time"].iloc[-1] / cycle, liner),
+        "deepest wear per cycle, liner": _per_cycle(wear, GUIDE, run_cycles, liner),
+        "deepest wear per cycle, skirt": _per_cycle(wear, SKIRT, run_cycles, liner),
     }
 
 
