@@ -82,7 +82,7 @@ def argument_problems(
                     to_si(value, argument.dimension)
                 except ValueError as error:
                     problems.append(
-                        f"{path}.{key}: {error}, as its argument {function.argument!r} is"
+                        f"{path}.{key}: {error} (its argument is {function.argument!r})"
                     )
                     break
     return problems
