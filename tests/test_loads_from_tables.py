@@ -165,3 +165,32 @@ def test_the_slide_a_stopped_run_reports_is_the_slider_s_position_and_speed():
     # the last row is the integrator's dense output at t_end, the state its step's end
     assert slide == pytest.approx(last["x_slider"], rel=1e-8)
     assert speed == pytest.approx(last["vx_slider"], rel=1e-8)
+
+
+def test_a_cam_table_of_the_crank_angle_drives_a_slider_with_the_chain_rule():
+    """A distance driver whose table is of an angle driver's value: s(theta(t)), with
+    s' theta' and s'' theta'^2 as its speed and acceleration. A not-a-knot cubic spline of a
+    cubic is that cubic, so the closed form holds to round-off."""
+    coefficients = [0.01, 0.002, -0.0003, 0.00001]  # s(theta) [m], theta [rad]
+    omega, theta = 10.0, np.linspace(0.0, 5.0, 11)
+    lift = {"type": "table", "argument": "crank", "x": list(theta),
+            "y": list(np.polyval(coefficients[::-1], theta)), "interpolation": "cubic"}  # fmt: skip
+    data = rotor(0.0, solver={"t_end": 0.4, "output_interval": 0.01})
+    data["ground"]["points"]["rail"] = [0.0, 1.0]
+    data["bodies"].append({"name": "slider", "mass": 0.5, "inertia": 1e-4, "angle": 0.0,
+                           "position": [0.01, 1.0], "points": {"c": [0.0, 0.0]}})  # fmt: skip
+    data["joints"].append({"name": "rail", "type": "translational", "bodies": ["ground", "slider"],
+                           "points": ["rail", "c"], "axis": [1.0, 0.0]})  # fmt: skip
+    data["drivers"] = [
+        {"name": "crank", "type": "angle", "body": "disc",
+         "function": {"type": "constant_speed", "speed": omega, "initial": 0.0}},
+        {"name": "lift", "type": "distance", "joint": "rail", "function": lift},
+    ]  # fmt: skip
+    results = jw.simulate(jw.parse_model(data))
+    assert results.status == "success", results.message
+    rows = results.timeseries
+    angle = omega * rows["time"].to_numpy()
+    poly = np.polynomial.Polynomial(coefficients)
+    assert np.allclose(rows["x_slider"], poly(angle), rtol=0, atol=1e-12)
+    assert np.allclose(rows["vx_slider"], poly.deriv()(angle) * omega, rtol=0, atol=1e-10)
+    assert np.allclose(rows["ax_slider"], poly.deriv(2)(angle) * omega**2, rtol=0, atol=1e-8)

@@ -18,7 +18,7 @@ from numpy.typing import NDArray
 from ..kernels.codes import ArgumentKind, FunctionKind
 from ..model import Model
 from ..model.arguments import resolve
-from ..model.functions import TableFunction, period
+from ..model.functions import ConstantSpeed, TableFunction, period
 
 MAX_COEFFICIENTS = 8
 RANGE_SAMPLES = 4001  # samples of a driver over the run, for the range its tables must cover
@@ -102,8 +102,8 @@ class FunctionRows:
         """One line per table without a period whose argument leaves its points in the run.
 
         Only arguments known before the run are judged: the time, and a driver's value
-        (sampled over the run, or over the driver's period if it repeats). A table of the
-        state that is left during a run stops it as non-finite.
+        (sampled over the run, and over a whole period of a driver whose values repeat). A
+        table of the state that is left during a run stops it as non-finite.
         """
         from ..kernels.functions import evaluate  # compiled: only when there is a table
 
@@ -115,7 +115,9 @@ class FunctionRows:
                 low, high = 0.0, t_end
             elif kind == ArgumentKind.DRIVER:
                 driver = self.model.drivers[index]
-                repeat = period(driver.function, driver.type, self.model.drivers) or t_end
+                repeat = t_end  # a constant speed's value runs on: the run's span
+                if not isinstance(driver.function, ConstantSpeed):  # its values repeat
+                    repeat = period(driver.function, driver.type, self.model.drivers) or t_end
                 g = mechanism.driver_function[index]
                 values = [
                     evaluate(
