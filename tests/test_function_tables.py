@@ -201,3 +201,12 @@ def test_points_are_read_from_a_csv_file_beside_the_model(tmp_path):
     (tmp_path / "curve.csv").write_text("time [s], torque [N*m]\n0, 1\n0.5, two\n")
     with pytest.raises(jw.ModelError, match=r"curve.csv, row 3, column 'torque': 'two' is not"):
         jw.load_model(tmp_path / "rotor.toml")
+
+
+@pytest.mark.parametrize("separator", [";", "\t"])
+def test_a_spreadsheet_s_semicolons_or_tabs_separate_the_cells(tmp_path, separator):
+    path = tmp_path / "curve.csv"
+    path.write_text(f"time [ms]{separator}torque [N*cm]\n0{separator}100\n1{separator}150\n")
+    spec = {"type": "table", "file": str(path)}
+    torque = jw.parse_model(rotor(spec, t_end=0.001)).forces[0].torque
+    assert torque.x == pytest.approx((0.0, 1e-3)) and torque.y == pytest.approx((1.0, 1.5))

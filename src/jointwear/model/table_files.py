@@ -1,8 +1,8 @@
 """CSV files of a table function: a header naming each column with its unit, then numbers.
 
 A header cell reads ``name [unit]`` (``crank angle [deg]``, ``pressure [bar]``); a cell
-without brackets is a column of SI numbers. Blank lines and lines starting with ``#`` are
-skipped.
+without brackets is a column of SI numbers. Cells are separated by commas, semicolons or
+tabs; blank lines and lines starting with ``#`` are skipped.
 """
 
 import csv
@@ -35,7 +35,9 @@ def read_columns(
     """
     try:
         with open(path, newline="", encoding="utf-8-sig") as handle:
-            rows = [r for r in csv.reader(handle) if r and not r[0].lstrip().startswith("#")]
+            text = handle.read()
+        lines = [line for line in text.splitlines() if not line.lstrip().startswith("#")]
+        rows = [r for r in csv.reader(lines, _dialect(lines)) if any(c.strip() for c in r)]
     except OSError as error:
         raise ValueError(f"cannot read the file {path}: {error.strerror}") from None
     except (UnicodeDecodeError, csv.Error) as error:
@@ -57,6 +59,14 @@ def read_columns(
                     f"{path}, row {number}, column '{names[column]}': {cell!r} is not a number"
                 ) from None
     return values[0], units[picked[0]] or None, values[1], units[picked[1]] or None
+
+
+def _dialect(lines: list[str]) -> type[csv.Dialect]:
+    """Commas, or the semicolons or tabs of a spreadsheet's export (csv's sniffer)."""
+    try:
+        return csv.Sniffer().sniff("\n".join(lines[:20]), delimiters=",;\t")
+    except csv.Error:
+        return csv.excel
 
 
 def _pick(path: str, names: list[str], columns: tuple[str, str] | None) -> tuple[int, int]:
