@@ -84,3 +84,17 @@ def chain(n: int, length: float, mass: float, angle: float, solver: dict) -> dic
         "forces": [GRAVITY],
         "solver": solver,
     }
+
+
+def rotor(*torques: object, inertia: float = 0.01, omega: float = 0.0, solver: dict) -> dict:
+    """A disc on a pin at its centre, without gravity, under torques (model-file values)."""
+    return {
+        "name": "rotor",
+        "ground": {"points": {"o": [0.0, 0.0]}},
+        "bodies": [{"name": "disc", "mass": 1.0, "inertia": inertia, "position": [0.0, 0.0],
+                    "angle": 0.0, "angular_velocity": omega, "points": {"c": [0.0, 0.0]}}],
+        "joints": [pin("pin", ("ground", "disc"), ("o", "c"))],
+        "forces": [{"type": "torque", "name": f"torque{i}", "body": "disc", "torque": torque}
+                   for i, torque in enumerate(torques)],
+        "solver": solver,
+    }  # fmt: skip

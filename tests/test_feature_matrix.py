@@ -41,6 +41,7 @@ EXAMPLE_END = {
     "slider_crank_clearance": 0.006,
     "slider_crank_piston_clearance": 0.006,
     "slotted_link": 0.02,
+    "single_cylinder_engine": 0.01,
 }
 
 PERIODIC_LOADS = """
@@ -99,10 +100,63 @@ torque = { type = "polynomial", coefficients = [0.001, 0.1] }
 """
 )
 
+# Tables and series: of the crank's driver, of time, and of the state (slide, angular speed).
+TABLE_LOADS = """
+[[forces]]
+type = "joint_pressure"
+name = "gas"
+joint = "slider_guide"
+area = "20 cm^2"
+[forces.pressure]
+type = "table"
+argument = "motor"
+x = [0, 170, 190, 360, 540]
+x_unit = "deg"
+y = [1, 20, 60, 5, 1.1]
+y_unit = "bar"
+period = "720 deg"
+
+[[forces]]
+type = "torque"
+body = "rod"
+[forces.torque]
+type = "fourier"
+period = "12 ms"
+mean = "0.01 N*m"
+cosine = [0.02, 0.01]
+sine = [0.005]
+
+[[forces]]
+type = "joint_force"
+name = "gas_spring"
+joint = "slider_guide"
+[forces.force]
+type = "table"
+argument = "slider_guide.slide"
+x = [0.0, 0.3]
+y = ["50 N", "20 N"]
+interpolation = "linear"
+
+[[forces]]
+type = "torque"
+name = "motor_curve"
+body = "crank"
+[forces.torque]
+type = "table"
+argument = "crank.angular_speed"
+x = ["0 rpm", "10000 rpm"]
+y = [2, 0]
+interpolation = "cubic"
+"""
+
 ANGLE_DRIVERS = {  # the crank's driver as each angle function type
     "harmonic_crank": {"type": "harmonic", "amplitude": "30 deg", "angular_frequency": "5000 rpm"},
     "polynomial_crank": {"type": "polynomial", "coefficients": [0.0, 400.0, 2000.0]},
-}
+    "table_crank": {
+        "type": "table", "x": [0, 3, 6, 9], "x_unit": "ms", "y": [0, 30, 0, -30],
+        "y_unit": "deg", "period": "12 ms", "interpolation": "cubic",
+    },
+}  # fmt: skip
 DISTANCE_DRIVERS = {  # the slider's driver (the crank then free) as each distance function
     "harmonic_slide": {
         "type": "harmonic", "offset": "0.109 m", "amplitude": "10 mm",
@@ -154,6 +208,10 @@ def _models() -> dict[str, tuple[str, float]]:
         _variant("slider_crank_clearance", PERIODIC_LOADS),
         0.006,
     )
+    models["slider_crank_clearance+tables"] = (
+        _variant("slider_crank_clearance", TABLE_LOADS),
+        0.006,
+    )
     for name, function in ANGLE_DRIVERS.items():
         driver = {"name": "motor", "type": "angle", "body": "crank", "function": function}
         models[f"slider_crank_clearance+{name}"] = (
@@ -173,6 +231,8 @@ def _models() -> dict[str, tuple[str, float]]:
 
 def _ending_at(text: str, end: float) -> str:
     """The model text with its solver's end time set to ``end`` [s], to be read anywhere."""
+    for table in re.findall(r'(?m)^file = "(.*)"', text):  # a table's points, beside it
+        text = text.replace(f'file = "{table}"', f'file = "{EXAMPLES / table}"')
     extends = re.search(r'(?m)^extends = "(.*)"$', text)
     if extends:  # a file named relative to the example's folder; its changes in [set]
         text = text.replace(extends[1], str(EXAMPLES / extends[1]))
@@ -306,7 +366,7 @@ def test_python_api(folders, name, tmp_path):
     assert loaded.model == model
     assert list(loaded.timeseries.columns) == list(results.timeseries.columns)
     assert set(loaded.units()) == set(results.timeseries.columns)
-    per_load = {"gravity": 0, "point_force": 2}  # columns; a torque or spring-damper has one
+    per_load = {"gravity": 0, "point_force": 2, "joint_pressure": 2}  # columns; others one
     loads = [c for c in results.timeseries.columns if c.startswith("load_")]
     assert len(loads) == sum(per_load.get(load.type, 1) for load in model.forces)
     loaded.plot(results.timeseries.columns[1])

@@ -430,9 +430,22 @@ def test_extends_chains_and_takes_the_name_from_the_file(tmp_path):
         ({"a.toml": "extends = 3"}, "a.toml: extends: expected the path of a model file"),
         (
             {"a.toml": 'extends = "base.toml"\n[solver]\nt_end = 1.0'},
-            "a.toml: solver: a file that extends another may only give extends, set, name",
+            "a.toml: solver: a file that extends another may only give extends, unset, set, name",
         ),
         ({"a.toml": "[set.solver]\nt_end = 1.0"}, "a.toml: set: only a file with 'extends'"),
+        ({"a.toml": 'unset = ["solver.t_end"]'}, "a.toml: unset: only a file with 'extends'"),
+        (
+            {"a.toml": 'extends = "base.toml"\nunset = "solver.t_end"'},
+            "a.toml: unset: expected an array of dotted paths",
+        ),
+        (
+            {"a.toml": 'extends = "base.toml"\n[set]\nunset = ["solver.t_end"]'},
+            "a.toml: set.unset: write the unset array above [set]",
+        ),
+        (
+            {"a.toml": 'extends = "base.toml"\nunset = ["bodies.rod.colour"]'},
+            "bodies.rod.colour: no key 'colour' to remove; the keys there are name, mass,",
+        ),
         (
             {"a.toml": 'extends = "base.toml"\n[set.bodies.rdo]\nmass = 2.0'},
             "bodies.rdo: no item 'rdo'; names are rod",

@@ -54,6 +54,7 @@ class _Kind(NamedTuple):
 _KINDS: dict[str, _Kind] = {
     "[]": _Kind("angle", "90 deg"),
     "[length]": _Kind("length", "9.8 mm"),
+    "[length] ** 2": _Kind("area", "50 cm^2"),
     "[mass]": _Kind("mass", "3.12 kg"),
     "[mass] * [length] ** 2": _Kind("moment of inertia", "0.042 kg*m^2"),
     "[time]": _Kind("time", "0.5 ms"),
@@ -182,6 +183,32 @@ def _to_si(value: object, dimension: str, expected: str) -> float:
     return result
 
 
+def dimension_of(value: object) -> str | None:
+    """The dimension key of a string with units or a Quantity (``"720 deg"`` -> "[]").
+
+    None for a plain number (SI of whatever the field means). ValueError if it cannot be read.
+    """
+    if _is_quantity(value):
+        value = f"{float(value.magnitude)!r} {value.units}"
+    if not isinstance(value, str):
+        return None
+    match = _QUANTITY.fullmatch(value)
+    if match is None or match.group(2) is None:
+        raise ValueError(f"cannot read {_SHORT.repr(value)} as a number and a unit")
+    import pint
+
+    ureg = registry()
+    try:
+        dimensionality = ureg.Quantity(1.0, ureg.parse_units(match.group(2))).dimensionality
+    except (pint.PintError, ArithmeticError, LookupError, ValueError) as error:
+        reason = " ".join(str(error).split()).rstrip(".") or type(error).__name__
+        raise ValueError(f"cannot read {_SHORT.repr(value)}: {reason}") from None
+    for key in _KINDS:
+        if ureg.get_dimensionality(key) == dimensionality:
+            return key
+    return str(dimensionality)
+
+
 def unit_of(text: str) -> tuple[str, float] | None:
     """The unit of a number-and-unit text and its size in SI: ``"9.8 mm"`` -> ("mm", 0.001).
 
@@ -221,6 +248,7 @@ def _quantity(dimension: str) -> BeforeValidator:
 
 
 Length = Annotated[float, _quantity("[length]")]
+Area = Annotated[float, _quantity("[length] ** 2")]
 Mass = Annotated[float, _quantity("[mass]")]
 Inertia = Annotated[float, _quantity("[mass] * [length] ** 2")]
 Angle = Annotated[float, _quantity("[]")]

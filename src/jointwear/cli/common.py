@@ -32,7 +32,11 @@ ModelPath = Annotated[
 ]
 Overrides = Annotated[
     list[str] | None,
-    typer.Option("--set", help="Override a model value: dotted.path=value (repeatable)."),
+    typer.Option(
+        "--set",
+        help="Override a model value: dotted.path=value; dotted.path= removes the key "
+        "(repeatable).",
+    ),
 ]
 Animation = Annotated[
     bool,
@@ -54,8 +58,15 @@ T_END = "solver.t_end"  # the model value --t-end sets
 
 
 def end_time(overrides: list[str] | None, t_end: str | None) -> list[str]:
-    """The --set values with --t-end's last (so it wins), read as --set reads its values."""
-    return [*(overrides or []), *([] if t_end is None else [f"{T_END}={t_end}"])]
+    """The --set values with --t-end's last (so it wins), read as --set reads its values.
+
+    An empty --t-end is an empty text, refused as a time, not the removal of the key that
+    ``solver.t_end=`` would be.
+    """
+    if t_end is None:
+        return [*(overrides or [])]
+    text = t_end if t_end.strip() else '""'  # TOML's empty string
+    return [*(overrides or []), f"{T_END}={text}"]
 
 
 def fail(error: ModelError, options: dict[str, str] | None = None) -> typer.Exit:

@@ -25,7 +25,7 @@ def not_conservative(model: Model) -> str | None:
     if model.has_clearance:
         return "its clearance joints dissipate energy"
     for force in model.forces:
-        if force.type in ("point_force", "torque"):
+        if force.does_work:
             return f"an applied {force.type.replace('_', ' ')} does work on it"
         if getattr(force, "damping", 0.0) > 0.0:
             return "a damper dissipates energy"

@@ -32,6 +32,8 @@ from .energy import EnergyMonitor
 from .interrupts import interruptible
 from .prepare import prepare
 from .provenance import provenance
+from .state_tables import left_tables
+from .status import status_message
 from .summary import clearance_summary, clearance_tables, run_stats, summary
 from .user_laws import user_tables
 
@@ -182,6 +184,8 @@ def simulate(
     done = drive(model, arrays, contacts, (windows, energy), t0, progress, status)
     t_reached = integrators.time(integ)
     status, detail = done.status, done.detail
+    if status == Status.NON_FINITE and not detail:
+        detail = status_message(status) + left_tables(model, integrators.state(integ))
     if lock is not None and t_reached - t0 >= LOCK_NEAR * lock.time and status in LOCK_FAILURES:
         status, detail = Status.LOCK_UP, lock.message()  # how the dynamics meet the lock-up
     wall = time.perf_counter() - wall_start

@@ -12,6 +12,7 @@ ALL_FIGURES = frozenset(
     {
         "energy.png",
         "cycle.png",
+        "loads.png",
         *(f"{name}.png" for kind in KINDS for name, _ in kind.figures),
         ANIMATION,
     }

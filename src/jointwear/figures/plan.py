@@ -48,13 +48,16 @@ def crank_driver(results: Results) -> tuple[str, str, float] | None:
 def figure_plan(results: Results, ideal: Results | None = None) -> dict[str, Drawing]:
     """Every figure that applies to ``results``, by file name without ``.png``.
 
-    The energy; with a crank, one turn; then each joint type's with clearance (for a
-    revolute joint the paper's Figs. 7-10, with ``ideal``, the same mechanism with ideal
-    joints, for Fig. 7; for a translational one the slider's motion, corner forces and wear).
+    The energy; with a crank, one cycle; the applied loads; then each joint type's with
+    clearance (for a revolute joint the paper's Figs. 7-10, with ``ideal``, the same mechanism
+    with ideal joints, for Fig. 7; for a translational one the slider's motion, corner forces
+    and wear).
     """
     plan = {"energy": Drawing(RUN_FIGURES, "plot_energy", (results,))}
     if crank_driver(results) is not None:
         plan["cycle"] = Drawing(RUN_FIGURES, "plot_cycle", (results,))
+    if any(load.type != "gravity" for load in results.model.forces):
+        plan["loads"] = Drawing(RUN_FIGURES, "plot_loads", (results,))
     for kind in KINDS:
         plan |= kind_drawings(kind, results, ideal)
     return plan

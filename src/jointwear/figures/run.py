@@ -7,11 +7,14 @@ never the kernel arrays.
 from __future__ import annotations
 
 import math
+from typing import NamedTuple
 
 import numpy as np
 import pandas as pd
+from matplotlib.axes import Axes
 from matplotlib.figure import Figure  # figures without pyplot: no global backend switch
 
+from ..mechanism.system import load_columns
 from ..results import Results
 from ..results.energy_balance import energy_balance, unaccounted
 from .legends import LEGEND_ROOM, legend_beside
@@ -20,47 +23,119 @@ from .plan import crank_driver
 STILL_SPEED = 1e-9  # [rad/s] a body whose angular velocity stays below this does not turn
 
 
-def _last_turn(df: pd.DataFrame, speed: float) -> pd.DataFrame:
-    period = 2.0 * math.pi / abs(speed)
-    t_end = df["time"].iloc[-1]
-    return df[df["time"] >= t_end - period * (1.0 + 1e-9)]
+class CycleRows(NamedTuple):
+    """The rows of the last cycle, against the crank's angle in it."""
+
+    rows: pd.DataFrame
+    angle: np.ndarray  # [deg], 0 to 360 turns, the driver's value modulo the cycle
+    turns: int  # crank turns in the cycle
+    driver: str
+    crank: str
+    speed: float  # [rad/s]
+
+
+def last_cycle(results: Results) -> CycleRows | None:
+    """The last cycle's rows against the crank angle, or None without a crank driver.
+
+    The cycle is the model's (its longest period: 720 deg for a four-stroke cylinder
+    pressure) when it is a whole number of crank turns, else one turn.
+    """
+    crank = crank_driver(results)
+    if crank is None:
+        return None
+    name, driven, speed = crank
+    turn = 2.0 * math.pi / abs(speed)
+    cycle = results.model.cycle or turn
+    turns = round(cycle / turn)
+    if turns < 1 or abs(cycle / turn - turns) > 1e-6:
+        turns = 1
+    df = results.timeseries
+    rows = df[df["time"] >= df["time"].iloc[-1] - turns * turn * (1.0 + 1e-9)]
+    driver = next(d for d in results.model.drivers if d.name == name)
+    value = rows[f"phi_{driven}"].to_numpy()
+    if driver.relative_to != "ground":
+        value = value - rows[f"phi_{driver.relative_to}"].to_numpy()
+    angle = np.degrees(value) % (360.0 * turns)
+    return CycleRows(rows, angle, turns, name, driven, speed)
+
+
+def _crank_axis(ax: Axes, cycle: CycleRows) -> None:
+    span = 360.0 * cycle.turns
+    ax.set_xlabel(f"{cycle.crank} angle [deg] (driver '{cycle.driver}')")
+    ax.set_xlim(0.0, span)
+    ax.set_xticks(np.arange(0, span + 1, 45 * cycle.turns))
+
+
+def _in_order(cycle: CycleRows, column: str) -> tuple[np.ndarray, np.ndarray]:
+    """A column's values against the cycle's angle, sorted by it."""
+    order = np.argsort(cycle.angle)
+    return cycle.angle[order], cycle.rows[column].to_numpy()[order]
 
 
 def plot_cycle(results: Results) -> Figure:
     """Plot the undriven bodies' angular velocity and acceleration, and the driver torque.
 
-    Against the crank angle over the last crank turn (paper Fig. 7a-c, ideal case).
+    Against the crank angle over the last cycle (paper Fig. 7a-c, ideal case).
     """
-    crank = crank_driver(results)
-    if crank is None:
+    cycle = last_cycle(results)
+    if cycle is None:
         raise ValueError("plot_cycle needs a constant-speed angle driver")
-    name, driven, speed = crank
-    turn = _last_turn(results.timeseries, speed)
-    angle = np.degrees(turn[f"phi_{driven}"].to_numpy()) % 360.0
-    order = np.argsort(angle)
     bodies = [  # those that turn: a piston's angular velocity is zero throughout
         b.name
         for b in results.model.bodies
-        if b.name != driven and np.abs(turn[f"omega_{b.name}"]).max() > STILL_SPEED
+        if b.name != cycle.crank and np.abs(cycle.rows[f"omega_{b.name}"]).max() > STILL_SPEED
     ]
     fig = Figure(figsize=(7.0 + LEGEND_ROOM, 8.0), layout="constrained")
     axes = fig.subplots(3, 1, sharex=True)
     for body in bodies:
-        axes[0].plot(angle[order], turn[f"omega_{body}"].to_numpy()[order], label=body)
-        axes[1].plot(angle[order], turn[f"alpha_{body}"].to_numpy()[order], label=body)
-    axes[2].plot(angle[order], turn[f"torque_{name}"].to_numpy()[order], color="k")
+        axes[0].plot(*_in_order(cycle, f"omega_{body}"), label=body)
+        axes[1].plot(*_in_order(cycle, f"alpha_{body}"), label=body)
+    axes[2].plot(*_in_order(cycle, f"torque_{cycle.driver}"), color="k")
     axes[0].set_ylabel("angular velocity [rad/s]")
     axes[1].set_ylabel("angular acceleration [rad/s²]")
-    axes[2].set_ylabel(f"driver '{name}' torque [N m]")
-    axes[2].set_xlabel(f"{driven} angle [deg]")
-    axes[2].set_xlim(0.0, 360.0)
-    axes[2].set_xticks(np.arange(0, 361, 45))
+    axes[2].set_ylabel(f"driver '{cycle.driver}' torque [N m]")
+    _crank_axis(axes[2], cycle)
     if bodies:
         legend_beside(axes[0])
     for ax in axes:
         ax.grid(alpha=0.3)
         ax.axhline(0.0, color="0.6", lw=0.6)
-    fig.suptitle(f"{results.model.name}: one {driven} turn ({abs(speed):.4g} rad/s)")
+    turns = "one turn" if cycle.turns == 1 else f"one cycle of {cycle.turns} turns"
+    fig.suptitle(f"{results.model.name}: {turns} of {cycle.crank} ({abs(cycle.speed):.4g} rad/s)")
+    return fig
+
+
+def plot_loads(results: Results) -> Figure:
+    """Every applied load but gravity, as the run applied it: one panel per load.
+
+    Against the crank angle over the last cycle with a crank driver, else against time.
+    """
+    loads: dict[str, list[str]] = {}  # the load's column stem -> its columns
+    for column, quantity in load_columns(results.model).items():
+        loads.setdefault(column.removesuffix(f"_{quantity}"), []).append(column)
+    units = results.units()
+    cycle = last_cycle(results)
+    fig = Figure(figsize=(7.0 + LEGEND_ROOM, 1.0 + 2.2 * len(loads)), layout="constrained")
+    axes = np.atleast_1d(fig.subplots(len(loads), 1, sharex=True, squeeze=False)[:, 0])
+    for ax, (stem, columns) in zip(axes, loads.items(), strict=True):
+        twin = None
+        for k, column in enumerate(columns):
+            unit = units[column]
+            target = ax if k == 0 or unit == units[columns[0]] else (twin := twin or ax.twinx())
+            x, y = (
+                _in_order(cycle, column)
+                if cycle
+                else (results.timeseries["time"], results.timeseries[column])
+            )
+            target.plot(x, y, lw=1.0, color=f"C{k}", label=column.removeprefix(f"{stem}_"))
+            target.set_ylabel(f"{column.removeprefix(f'{stem}_')} [{unit}]", color=f"C{k}")
+        ax.set_title(stem.removeprefix("load_"), loc="left", fontsize="medium")
+        ax.grid(alpha=0.3)
+    if cycle:
+        _crank_axis(axes[-1], cycle)
+    else:
+        axes[-1].set_xlabel("time [s]")
+    fig.suptitle(f"{results.model.name}: applied loads")
     return fig
 
 

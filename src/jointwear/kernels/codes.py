@@ -26,10 +26,23 @@ class DriverKind(IntEnum):
 
 
 class FunctionKind(IntEnum):
-    """Functions of time f(t) used by drivers and applied loads."""
+    """Functions f(x) used by drivers and applied loads (``kernels.functions``)."""
 
-    POLYNOMIAL = 0  # sum_k c_k t^k
-    HARMONIC = 1  # offset + amplitude * sin(omega t + phase)
+    POLYNOMIAL = 0  # sum_k c_k x^k
+    HARMONIC = 1  # offset + amplitude * sin(omega x + phase)
+    SPLINE = 2  # a piecewise cubic on breakpoints, periodic or not (a table)
+    FOURIER = 3  # mean + sum_k a_k cos(k omega x) + b_k sin(k omega x)
+
+
+class ArgumentKind(IntEnum):
+    """What a function's argument x is (``kernels.functions.argument``)."""
+
+    TIME = 0  # t [s]
+    DRIVER = 1  # the value a driver prescribes at t [rad or m]
+    ANGLE = 2  # a body's angle [rad]
+    ANGULAR_SPEED = 3  # a body's angular speed [rad/s]
+    SLIDE = 4  # a joint's slide along its axis [m]
+    SLIDE_SPEED = 5  # its rate [m/s]
 
 
 class ForceKind(IntEnum):
@@ -39,6 +52,8 @@ class ForceKind(IntEnum):
     TORQUE = 1
     SPRING_DAMPER = 2
     ROTATIONAL_SPRING_DAMPER = 3
+    JOINT_FORCE = 4  # along a joint's axis between its two bodies
+    JOINT_PRESSURE = 5  # a pressure times an area, along a joint's axis
 
 
 class Method(IntEnum):

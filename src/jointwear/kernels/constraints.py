@@ -18,7 +18,7 @@ import math
 from numba import njit
 
 from .codes import DriverKind, JointKind
-from .functions import evaluate
+from .functions import value
 from .kinematics import angle, angular_velocity, point_position, point_velocity, rotate
 
 
@@ -115,7 +115,7 @@ def evaluate_constraints(t, q, qd, mech, phi, cq, gamma, phi_t):
     for d in range(mech.driver_kind.shape[0]):
         r = mech.driver_row[d]
         fn = mech.driver_function[d]
-        f, fd, fdd = evaluate(mech.function_kind[fn], mech.function_param[fn], t)
+        f, fd, fdd = value(mech, fn, t, q, qd)
         if mech.driver_kind[d] == DriverKind.ANGLE:
             i = mech.driver_body[d, 0]
             j = mech.driver_body[d, 1]

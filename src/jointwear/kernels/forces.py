@@ -7,12 +7,16 @@
 | k, c | spring stiffness and damping | N/m, N s/m (rotational: N m/rad, N m s/rad) |
 | l0 | free length (rotational: free angle) | m (rad) |
 
-A force F at body point s adds (F_x, F_y, (A s) x F) to that body's entries.
+A force F at body point s adds (F_x, F_y, (A s) x F) to that body's entries. A joint force
+(or a joint pressure times its area) F acts along the joint's axis u (the first body's frame):
++F u on the second body at its point, -F u on the first body at the same global point, so
+the pair has no moment.
 
 ``write_loads`` puts each load as it is applied in the output row (``system.load_columns``
 names them): a point force's (F_x, F_y) [N]; a torque [N m]; a spring-damper's force on its
 second point along the line from its first, positive pushing them apart [N]; a rotational
-spring-damper's torque on its second body [N m]. Gravity has no columns.
+spring-damper's torque on its second body [N m]; a joint force's F [N], or a joint pressure's
+pressure [Pa] and F [N]. Gravity has no columns.
 """
 
 import math
@@ -20,7 +24,7 @@ import math
 from numba import njit
 
 from .codes import ForceKind
-from .functions import evaluate
+from .functions import value
 from .kinematics import (
     angle,
     angular_velocity,
@@ -42,10 +46,30 @@ def _apply(q, g, b, sx, sy, fx, fy):
 
 
 @njit(cache=True, no_cpython_wrapper=True)
-def _function_value(mech, fn, t):
-    if fn < 0:
-        return 0.0
-    return evaluate(mech.function_kind[fn], mech.function_param[fn], t)[0]
+def _apply_at(q, g, b, px, py, fx, fy):
+    """Add force (fx, fy) [N] acting at global point p [m] to body b's entries of g."""
+    if b < 0:
+        return
+    g[3 * b] += fx
+    g[3 * b + 1] += fy
+    g[3 * b + 2] += (px - q[3 * b]) * fy - (py - q[3 * b + 1]) * fx
+
+
+@njit(cache=True, no_cpython_wrapper=True)
+def _function_value(mech, fn, t, q, qd):
+    return value(mech, fn, t, q, qd)[0]
+
+
+@njit(cache=True, no_cpython_wrapper=True)
+def _joint_force(q, g, mech, e, force):
+    """Apply ``force`` [N] along load e's joint axis: on body 2 at its point, minus on body 1."""
+    b1 = mech.force_body[e, 0]
+    b2 = mech.force_body[e, 1]
+    s = mech.force_point[e]
+    ux, uy = rotate(q, b1, mech.force_param[e, 1], mech.force_param[e, 2])
+    px, py = point_position(q, b2, s[1, 0], s[1, 1])
+    _apply_at(q, g, b2, px, py, force * ux, force * uy)
+    _apply_at(q, g, b1, px, py, -force * ux, -force * uy)
 
 
 @njit(cache=True, no_cpython_wrapper=True)
@@ -105,23 +129,30 @@ def applied_forces(t, q, qd, mech, g):
         b1 = mech.force_body[e, 0]
         b2 = mech.force_body[e, 1]
         if kind == ForceKind.POINT_FORCE:
-            fx = _function_value(mech, mech.force_function[e, 0], t)
-            fy = _function_value(mech, mech.force_function[e, 1], t)
+            fx = _function_value(mech, mech.force_function[e, 0], t, q, qd)
+            fy = _function_value(mech, mech.force_function[e, 1], t, q, qd)
             _apply(q, g, b1, mech.force_point[e, 0, 0], mech.force_point[e, 0, 1], fx, fy)
         elif kind == ForceKind.TORQUE:
             if b1 >= 0:
-                g[3 * b1 + 2] += _function_value(mech, mech.force_function[e, 0], t)
+                g[3 * b1 + 2] += _function_value(mech, mech.force_function[e, 0], t, q, qd)
+        elif kind == ForceKind.JOINT_FORCE or kind == ForceKind.JOINT_PRESSURE:
+            force = mech.force_param[e, 0] * _function_value(
+                mech, mech.force_function[e, 0], t, q, qd
+            )
+            _joint_force(q, g, mech, e, force)
         elif kind == ForceKind.SPRING_DAMPER:
             tension, ux, uy = _spring_tension(q, qd, mech, e)
             s = mech.force_point[e]
             _apply(q, g, b1, s[0, 0], s[0, 1], tension * ux, tension * uy)
             _apply(q, g, b2, s[1, 0], s[1, 1], -tension * ux, -tension * uy)
-        else:  # rotational spring-damper on phi_2 - phi_1
+        elif kind == ForceKind.ROTATIONAL_SPRING_DAMPER:  # on phi_2 - phi_1
             torque = _spring_torque(q, qd, mech, e)
             if b1 >= 0:
                 g[3 * b1 + 2] += torque
             if b2 >= 0:
                 g[3 * b2 + 2] -= torque
+        else:  # an unknown kind: the run stops non-finite rather than run as another
+            g[0] = math.nan
 
 
 @njit(cache=True, no_cpython_wrapper=True)
@@ -133,17 +164,29 @@ def write_loads(t, q, qd, mech, row, c):
     for e in range(mech.force_kind.shape[0]):
         kind = mech.force_kind[e]
         if kind == ForceKind.POINT_FORCE:
-            row[c] = _function_value(mech, mech.force_function[e, 0], t)
-            row[c + 1] = _function_value(mech, mech.force_function[e, 1], t)
+            row[c] = _function_value(mech, mech.force_function[e, 0], t, q, qd)
+            row[c + 1] = _function_value(mech, mech.force_function[e, 1], t, q, qd)
             c += 2
         elif kind == ForceKind.TORQUE:
-            row[c] = _function_value(mech, mech.force_function[e, 0], t)
+            row[c] = _function_value(mech, mech.force_function[e, 0], t, q, qd)
             c += 1
+        elif kind == ForceKind.JOINT_FORCE:  # its scale is 1
+            row[c] = mech.force_param[e, 0] * _function_value(
+                mech, mech.force_function[e, 0], t, q, qd
+            )
+            c += 1
+        elif kind == ForceKind.JOINT_PRESSURE:
+            row[c] = _function_value(mech, mech.force_function[e, 0], t, q, qd)
+            row[c + 1] = mech.force_param[e, 0] * row[c]
+            c += 2
         elif kind == ForceKind.SPRING_DAMPER:
             row[c] = -_spring_tension(q, qd, mech, e)[0]
             c += 1
-        else:
+        elif kind == ForceKind.ROTATIONAL_SPRING_DAMPER:
             row[c] = -_spring_torque(q, qd, mech, e)
+            c += 1
+        else:  # an unknown kind: the run stops non-finite rather than run as another
+            row[c] = math.nan
             c += 1
     return c
 

@@ -47,7 +47,7 @@ class LockUp:
 
 def lock_up_span(model: Model) -> float:
     """Time to check [s]: one cycle of the slowest periodic driver, at most the run's end."""
-    periods = [period(d.function, d.type) for d in model.drivers]
+    periods = [period(d.function, d.type, model.drivers) for d in model.drivers]
     cycles = [p for p in periods if p]  # None (never repeats) and 0 (constant) give no cycle
     return min(model.solver.t_end, max(cycles)) if cycles else model.solver.t_end
 

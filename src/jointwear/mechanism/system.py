@@ -13,16 +13,16 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..joints import BY_NAME, KINDS
-from ..kernels.codes import JOINT_ROWS, DriverKind, EventDirection, FunctionKind
+from ..kernels.codes import JOINT_ROWS, DriverKind, EventDirection
 from ..kernels.loop import UserEvents
 from ..model import Model
 from ..model.clearance import contact_problems
 from ..model.errors import ModelError
 from ..model.sections import Load
+from .functions import MAX_COEFFICIENTS, FunctionRows
 from .pattern import build_pattern
 
 GROUND = -1
-MAX_COEFFICIENTS = 8
 BODY_COLUMNS = ("x", "y", "phi", "vx", "vy", "omega", "ax", "ay", "alpha")
 # A load's columns (kernels.forces.write_loads): a point force's components, a torque, a
 # spring-damper's force along its line, a rotational spring-damper's torque.
@@ -31,6 +31,8 @@ LOAD_QUANTITIES = {
     "torque": ("torque",),
     "spring_damper": ("force",),
     "rotational_spring_damper": ("torque",),
+    "joint_force": ("force",),
+    "joint_pressure": ("pressure", "force"),
 }
 PROJECTION_TOLERANCE = 1e-13  # constraint norm the projections reach, of the mechanism's size
 
@@ -55,11 +57,16 @@ class Mechanism(NamedTuple):
     driver_row: NDArray[np.int64]  # (nd,) constraint row
     function_kind: NDArray[np.int64]  # (nf,) FunctionKind
     function_param: NDArray[np.float64]  # (nf, 8)
+    function_argument: NDArray[np.int64]  # (nf, 3) ArgumentKind, its driver, body or bodies
+    function_geometry: NDArray[np.float64]  # (nf, 6) a slide's two points and axis [m, -]
+    function_data: NDArray[np.float64]  # tables' breakpoints and coefficients, series' terms
     force_kind: NDArray[np.int64]  # (nl,) ForceKind
     force_body: NDArray[np.int64]  # (nl, 2)
     force_point: NDArray[np.float64]  # (nl, 2, 2) [m]
-    force_function: NDArray[np.int64]  # (nl, 2) function rows of (fx, fy) or (torque, -)
-    force_param: NDArray[np.float64]  # (nl, 3) stiffness, damping, free length or angle
+    force_function: NDArray[np.int64]  # (nl, 2) function rows of (fx, fy), (value, -)
+    # (nl, 3): springs' stiffness, damping, free length or angle; joint loads' scale (1 or
+    # the area [m^2]) and axis (first body's frame)
+    force_param: NDArray[np.float64]
     baumgarte_alpha: float  # [1/s]
     baumgarte_beta: float  # [1/s]
     penalty: float  # augmented Lagrangian penalty, relative to each row's effective mass [-]
@@ -151,6 +158,8 @@ def _load_name(load: Load) -> str:
         return f"{load.body}_{load.point}"
     if load.type == "torque":
         return load.body
+    if load.type in ("joint_force", "joint_pressure"):
+        return load.joint
     return "_".join(load.bodies)
 
 
@@ -171,35 +180,6 @@ def _columns_around_loads(model: Model) -> tuple[list[str], list[str]]:
     if model.has_clearance:
         after.append("energy_contact")
     return before, [*after, "constraint_violation"]
-
-
-class _Functions:
-    """Collects functions of time into the (kind, parameters) table."""
-
-    def __init__(self) -> None:
-        self.kind: list[int] = []
-        self.param: list[NDArray[np.float64]] = []
-
-    def add(self, kind: FunctionKind, values: list[float]) -> int:
-        row = np.zeros(MAX_COEFFICIENTS)
-        row[: len(values)] = values
-        self.kind.append(int(kind))
-        self.param.append(row)
-        return len(self.kind) - 1
-
-    def add_spec(self, spec: object, initial: float = 0.0) -> int:
-        """Add a constant, constant_speed, polynomial or harmonic specification."""
-        if isinstance(spec, int | float):
-            return self.add(FunctionKind.POLYNOMIAL, [float(spec)])
-        if spec.type == "constant_speed":
-            start = initial if spec.initial is None else spec.initial
-            return self.add(FunctionKind.POLYNOMIAL, [start, spec.speed])
-        if spec.type == "polynomial":
-            return self.add(FunctionKind.POLYNOMIAL, list(spec.coefficients))
-        return self.add(
-            FunctionKind.HARMONIC,
-            [spec.offset, spec.amplitude, spec.angular_frequency, spec.phase],
-        )
 
 
 def _size(model: Model) -> float:
@@ -270,11 +250,11 @@ def _joint_tables(
 
 
 def _driver_table(
-    model: Model, poses: _Poses, functions: _Functions, kernel_index: dict[str, int], row: int
+    model: Model, poses: _Poses, functions: FunctionRows, kernel_index: dict[str, int], row: int
 ) -> dict[str, list]:
     """The drivers' table, their constraint rows from ``row`` on."""
     drivers = {"kind": [], "body": [], "joint": [], "function": [], "row": []}
-    for driver in model.drivers:
+    for d, driver in enumerate(model.drivers):
         if driver.type == "angle":
             i, j = driver.relative_to, driver.body
             initial = poses.angle(j) - poses.angle(i)
@@ -294,31 +274,40 @@ def _driver_table(
             drivers["kind"].append(int(DriverKind.DISTANCE))
             drivers["body"].append([GROUND, GROUND])
             drivers["joint"].append(kernel_index[driver.joint])
-        drivers["function"].append(functions.add_spec(driver.function, initial))
+        drivers["function"].append(
+            functions.add(driver.function, f"drivers[{d}].function", initial)
+        )
         drivers["row"].append(row)
         row += 1
     return drivers
 
 
 def _load_table(
-    model: Model, poses: _Poses, functions: _Functions
+    model: Model, poses: _Poses, functions: FunctionRows
 ) -> tuple[dict[str, list], NDArray[np.float64]]:
     """The applied loads' table, and gravity [m/s^2]."""
     gravity = np.zeros(2)
     loads = {"kind": [], "body": [], "point": [], "function": [], "param": []}
-    for force in model.forces:
+    for i, force in enumerate(model.forces):
         if force.type == "gravity":
             gravity += np.asarray(force.acceleration, dtype=float)
             continue
         body_pair, point_pair = [GROUND, GROUND], [(0.0, 0.0), (0.0, 0.0)]
-        funcs, param = [-1, -1], [0.0, 0.0, 0.0]
+        param = [0.0, 0.0, 0.0]
+        funcs = [functions.add(f, f"forces[{i}].{key}") for key, f in force.functions.items()]
+        funcs += [-1] * (2 - len(funcs))
         if force.type == "point_force":
             body_pair[0] = poses.index[force.body]
             point_pair[0] = poses.local(force.body, force.point)
-            funcs = [functions.add_spec(force.force[0]), functions.add_spec(force.force[1])]
         elif force.type == "torque":
             body_pair[0] = poses.index[force.body]
-            funcs[0] = functions.add_spec(force.torque)
+        elif force.type in ("joint_force", "joint_pressure"):
+            joint = model.joint(force.joint)
+            body_pair = [poses.index[b] for b in joint.bodies]
+            point_pair = [
+                poses.local(b, p) for b, p in zip(joint.bodies, joint.points, strict=True)
+            ]
+            param = [getattr(force, "area", 1.0), *joint.axis]
         elif force.type == "spring_damper":
             body_pair = [poses.index[b] for b in force.bodies]
             point_pair = [
@@ -371,7 +360,7 @@ def build_system(model: Model, *, ideal: bool = False) -> System:
     if problems:
         raise ModelError(problems)
     poses = _Poses(model)
-    functions = _Functions()
+    functions = FunctionRows(model, poses.index, poses.local)
     joints, kernel_index, elements = _joint_tables(model, poses, ideal)
     first_driver_row = sum(joints["rows"])
     drivers = _driver_table(model, poses, functions, kernel_index, first_driver_row)
@@ -397,6 +386,9 @@ def build_system(model: Model, *, ideal: bool = False) -> System:
         driver_row=_table(drivers["row"], (), np.int64),
         function_kind=_table(functions.kind, (), np.int64),
         function_param=_table(functions.param, (MAX_COEFFICIENTS,), np.float64),
+        function_argument=_table(functions.argument, (3,), np.int64),
+        function_geometry=_table(functions.geometry, (6,), np.float64),
+        function_data=np.array(functions.data, dtype=np.float64),
         force_kind=_table(loads["kind"], (), np.int64),
         force_body=_table(loads["body"], (2,), np.int64),
         force_point=_table(loads["point"], (2, 2), np.float64),
@@ -409,6 +401,9 @@ def build_system(model: Model, *, ideal: bool = False) -> System:
         redundant=False,
         **build_pattern(row_bodies, len(model.bodies))._asdict(),
     )
+    problems = functions.range_problems(mechanism)
+    if problems:
+        raise ModelError(problems)
     return System(mechanism, _element_rows(elements), _user_events(model, poses))
 
 

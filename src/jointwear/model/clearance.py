@@ -147,6 +147,46 @@ class ClearanceTable(_LawKeys):
     The keys of the laws (restitution, friction speeds, wear coefficients, ...) come from the
     law records (``_LawKeys``). Pairs of material values are [first body, second body]. An
     element kind's table gives its ``contact`` and the law families it chooses from.
+    docs/model-format.md lists every key with its default and bounds.
+
+    Attributes
+    ----------
+    width
+        Length of the contact along the joint's axis [m].
+    youngs_modulus
+        E [Pa]: one value, or (first body, second body).
+    poisson_ratio
+        nu [-]: one value, or (first body, second body).
+    normal_law, damping, friction_law, wear_law, lubrication
+        The laws chosen, by name.
+    min_impact_speed
+        Floor of the impact speed that scales the damping [m/s].
+    contact_tolerance
+        Penetration at which a contact period begins [m].
+    friction_coefficient
+        c_f, the sliding friction coefficient [-].
+    wear_feedback
+        Whether the worn profiles enlarge the clearance in the penetration.
+    restitution_coefficient
+        c_e [-] (the damping laws).
+    exponent, contact_stiffness, foundation_thickness
+        n [-], K [N/m^n] and the elastic layer's thickness [m] (the elastic laws).
+    no_friction_speed, full_friction_speed
+        v0, v1 [m/s] (``ambrosio``).
+    regularisation_speed
+        [m/s] (``coulomb``).
+    stiction_speed, transition_speed
+        [m/s] (``stick_slip``).
+    static_friction_coefficient
+        mu_s [-] (``stick_slip``).
+    wear_coefficient
+        Archard's k [1/Pa]; or ``dimensionless_wear_coefficient`` K [-] with ``hardness`` H
+        [Pa] of the softer surface, k = K / H.
+    shear_strength
+        tau [Pa] (``reye``).
+    viscosity, film_breakdown
+        The lubricant's dynamic viscosity [Pa s] and the eccentricity ratio [-] where the film
+        hands over to solid contact.
     """
 
     FAMILIES: ClassVar[tuple[Family, ...]] = SHARED
@@ -229,6 +269,11 @@ class ClearanceTable(_LawKeys):
             else own.get(key.name, key.default)
             for key in law.keys
         }  # fmt: skip
+
+    def unused_law_keys(self) -> set[str]:
+        """The keys of this table's law families that its chosen laws do not read."""
+        read = {key.name for _, law in self.chosen_laws() for key in law.keys}
+        return {key for family in self.FAMILIES for key in family_keys(family)} - read
 
     def _unused_keys(self) -> list[str]:
         lines = []  # a default value is not a setting (and model.json writes them all)

@@ -10,7 +10,7 @@ import difflib
 import re
 from collections.abc import Iterable, Sequence
 
-from pydantic import ValidationError
+from pydantic import BaseModel, ValidationError
 
 TOO_DEEP = "nested too deeply to read (arrays or tables within each other); flatten it"
 TOO_LONG = "a number has too many digits to read; write it with an exponent (e.g. 1e30)"
@@ -44,10 +44,13 @@ def unknown(what: str, word: object, choices: Sequence[str], plural: str) -> str
     return f"unknown {what} {word!r}; {plural} are {', '.join(choices)}{hint}"
 
 
-def from_validation_error(error: ValidationError, data: object) -> ModelError:
-    """Rewrite a pydantic ``ValidationError`` raised while validating `data`."""
+def from_validation_error(error: ValidationError, data: object, root: str = "model") -> ModelError:
+    """Rewrite a pydantic ``ValidationError`` raised while validating `data`.
+
+    ``root`` names `data` itself in a line about the whole of it.
+    """
     items = error.errors(include_url=False)
-    return ModelError([_line(item, data) for item in items if not _follows_from_items(item)])
+    return ModelError([_line(item, data, root) for item in items if not _follows_from_items(item)])
 
 
 def _follows_from_items(item: dict) -> bool:
@@ -68,7 +71,7 @@ _BOUNDS = {  # pydantic's bound errors: the sign, and the key of the bound in th
 }
 
 
-def _line(item: dict, data: object) -> str:
+def _line(item: dict, data: object, root: str) -> str:
     path = toml_path(data, item["loc"])
     kind, ctx = item["type"], item.get("ctx", {})
     given = _show(item.get("input"))
@@ -81,6 +84,9 @@ def _line(item: dict, data: object) -> str:
         path, message = f"{path}.type", unknown("type", ctx["tag"], types, "types")
     elif kind == "value_error":
         message = item["msg"].removeprefix("Value error, ")
+    elif kind == "model_type" and isinstance(item.get("input"), BaseModel):
+        built = type(item["input"]).__name__
+        message = f"got a {built}; expected a {ctx['class_name']} (or a table of its keys)"
     elif kind in ("model_type", "dict_type", "model_attributes_type"):
         message = f"got {given}; expected a table"
     elif kind in ("tuple_type", "list_type"):
@@ -95,17 +101,20 @@ def _line(item: dict, data: object) -> str:
         message = f"got {given}; expected {ctx['expected']}"
     else:
         message = f"got {given}; {item['msg'][0].lower()}{item['msg'][1:]}"
-    return f"{path or 'model'}: {message}"
+    return f"{path or root}: {message}"
 
 
 def toml_path(data: object, loc: Sequence[str | int]) -> str:
     """Turn a pydantic error location into a path such as ``forces[1].force[0]``.
 
     The location is walked through the input data, so that the tags pydantic inserts for
-    discriminated unions (the table's ``type``, or ``SCALAR_TAG``) are left out.
+    discriminated unions (the table's ``type``, or ``SCALAR_TAG``) are left out. Tables built
+    in Python are walked as the dicts of their values.
     """
     path, current, tagged = "", data, False
     for key in loc:
+        if isinstance(current, BaseModel):
+            current = dict(current)
         if isinstance(key, int) and isinstance(current, list | tuple):
             path += f"[{key}]"
             current = current[key] if -len(current) <= key < len(current) else None

@@ -1,9 +1,15 @@
 """Reading model files: TOML text, and files that extend another model file.
 
 A file with ``extends = "other.toml"`` (a path relative to the file) is that model with the
-values under its ``[set]`` table changed, each dotted key addressing one value as in
-``jointwear run --set`` (array items by name). Beside them it may give its own ``name`` and
-``description``; the name defaults to the file's stem.
+keys listed in its ``unset`` array removed, then the values under its ``[set]`` table
+changed, each dotted key addressing one value as in ``jointwear run --set`` (array items by
+name). Beside them it may give its own ``name`` and ``description``; the name defaults to
+the file's stem.
+
+Removal is a list of paths of its own, not a special value under ``[set]``: TOML has no
+null, and any string or table given there could be a value some key takes.
+
+A table function's ``file`` is named relative to the file that names it.
 
 A results folder stands for the model it was run with: its ``model.json``, which every run
 writes (the resolved model, values in SI).
@@ -15,9 +21,10 @@ import tomllib
 from pathlib import Path
 
 from .errors import TOO_DEEP, TOO_LONG, ModelError
-from .overrides import apply_changes
+from .overrides import REMOVE, apply_changes
+from .table_files import resolve_files
 
-EXTENDING_KEYS = ("extends", "set", "name", "description")
+EXTENDING_KEYS = ("extends", "unset", "set", "name", "description")
 MAX_FILE_BYTES = 10**7  # a model file larger than this is not one
 MAX_KEY_DEPTH = 200  # dotted parts in one key: far more than a model has
 SAVED_MODEL = "model.json"  # in a results folder: the model it was run with
@@ -76,10 +83,11 @@ def read_saved_model(folder: Path) -> dict:
 
 
 def _resolve(path: Path, chain: tuple[Path, ...]) -> dict:
-    data = _read_toml(path)
+    data = resolve_files(_read_toml(path), path.parent)
     if "extends" not in data:
-        if "set" in data:
-            raise ModelError([f"{path}: set: only a file with 'extends' may change values"])
+        for key in ("unset", "set"):
+            if key in data:
+                raise ModelError([f"{path}: {key}: only a file with 'extends' may change values"])
         return data
     base = data["extends"]
     if not isinstance(base, str) or not base or "\x00" in base:
@@ -89,13 +97,14 @@ def _resolve(path: Path, chain: tuple[Path, ...]) -> dict:
         raise ModelError(
             [
                 f"{path}: {key}: a file that extends another may only give "
-                f"{', '.join(EXTENDING_KEYS)}; change values under [set]"
+                f"{', '.join(EXTENDING_KEYS)}; change values under [set], remove keys with unset"
                 for key in extra
             ]
         )
     changes = data.get("set", {})
     if not isinstance(changes, dict):
         raise ModelError([f"{path}: set: expected a table of values to change"])
+    removals = _removals(path, data.get("unset", []), changes)
     here = path.resolve()
     base_path = path.parent / base
     if base_path.resolve() in (*chain, here):
@@ -105,11 +114,23 @@ def _resolve(path: Path, chain: tuple[Path, ...]) -> dict:
         resolved = _resolve(base_path, (*chain, here))
     except ModelError as error:
         raise ModelError([f"{path}: extends {base!r}: {line}" for line in error.problems]) from None
-    resolved = apply_changes(resolved, _leaves(changes, ()))
+    resolved = apply_changes(resolved, [*removals, *_leaves(changes, ())])
     resolved["name"] = data.get("name", path.stem)
     if "description" in data:
         resolved["description"] = data["description"]
     return resolved
+
+
+def _removals(path: Path, unset: object, changes: dict) -> list[tuple[str, None]]:
+    """The changes that remove the keys an ``unset`` array lists."""
+    example = 'e.g. unset = ["joints.pin.clearance.wear_coefficient"], above [set]'
+    if "unset" in changes:  # written below the [set] header, TOML reads it as set.unset
+        raise ModelError([f"{path}: set.unset: write the unset array above [set] ({example})"])
+    if not isinstance(unset, list) or not all(
+        isinstance(item, str) and all(item.split(".")) for item in unset
+    ):
+        raise ModelError([f"{path}: unset: expected an array of dotted paths ({example})"])
+    return [(item, REMOVE) for item in unset]
 
 
 def _leaves(table: dict, prefix: tuple[str, ...]) -> list[tuple[str, object]]:

@@ -93,6 +93,17 @@ def reference_problems(
             body(f"{path}.body", force.body, allow_ground=False)
         elif force.type in ("spring_damper", "rotational_spring_damper"):
             pair(path, force, with_points=force.type == "spring_damper")
+        elif force.type in ("joint_force", "joint_pressure") and force.joint not in kinds:
+            problems.append(f"{path}.joint: {unknown('joint', force.joint, list(kinds), 'joints')}")
+        elif (
+            force.type in ("joint_force", "joint_pressure")
+            and not BY_NAME[kinds[force.joint]].slides
+        ):
+            along = [j.name for j in joints if BY_NAME[j.type].slides]
+            problems.append(
+                f"{path}.joint: {force.joint!r} is {kinds[force.joint]}; a {force.type} acts "
+                f"along a {sliding} joint's axis ({', '.join(along) or 'there are none'})"
+            )
     for i, event in enumerate(events):
         body(f"events[{i}].body", event.body, allow_ground=False)
     return problems

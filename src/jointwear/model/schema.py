@@ -12,6 +12,7 @@ from typing import Annotated
 
 from pydantic import Field, ValidationError, model_validator
 
+from .arguments import argument_problems
 from .errors import TOO_DEEP, ModelError, from_validation_error
 from .files import read_model_data
 from .functions import longest_period
@@ -32,7 +33,35 @@ from .tables import JointTable, Table
 
 
 class Model(Table):
-    """A whole model file, validated, in SI units."""
+    """A whole model file, validated, in SI units.
+
+    Built in Python from its tables (``Body``, ``RevoluteJoint``, ...) or from dicts of a
+    file's keys, it is checked as a file is, names between tables too, and raises
+    ``ModelError`` with the same lines (docs/python-models.md).
+
+    Attributes
+    ----------
+    name
+        The model's name.
+    description
+        One line about it.
+    ground
+        The fixed points [m] (a ``Ground``).
+    bodies
+        The moving bodies (``Body``), at least one.
+    joints
+        ``RevoluteJoint``, ``TranslationalJoint`` and ``PinInSlotJoint`` tables, ideal or
+        with clearance.
+    drivers
+        ``AngleDriver`` [rad] and ``DistanceDriver`` [m] tables.
+    forces
+        ``Gravity`` [m/s^2], ``PointForce`` [N], ``AppliedTorque`` [N m], ``SpringDamper``
+        and ``RotationalSpringDamper`` tables.
+    solver
+        Integration and output settings (a ``Solver``; times [s]).
+    events
+        ``Event`` tables: crossings of a body's coordinate [m or rad].
+    """
 
     name: Annotated[str, Field(min_length=1)]
     description: str = ""
@@ -49,6 +78,8 @@ class Model(Table):
         problems = reference_problems(
             self.ground, self.bodies, self.joints, self.drivers, self.forces, self.events
         )
+        if not problems:
+            problems = argument_problems(self.drivers, self.bodies, self.joints, self.forces)
         if problems:
             raise ModelError(problems)
         return self
@@ -76,15 +107,45 @@ class Model(Table):
 
         ``changes`` maps dotted paths, as ``--set`` takes them
         (``"joints.coupler_follower.clearance.wear_coefficient"``, ``"bodies.crank.mass"``),
-        to values: SI numbers, strings with units (``"3 kg"``) or pint Quantities.
+        to values: SI numbers, strings with units (``"3 kg"``) or pint Quantities; None
+        removes the key (its default applies, or another key can replace it), as ``--set
+        path=`` does. Changes apply in order.
 
         Raises
         ------
         ModelError
-            One line per problem, as for a model file.
+            One line per problem, as for a model file; a removed key that is not there.
         """
-        data = apply_changes(self.model_dump(mode="json"), changes.items())
+        data = apply_changes(self._data(), changes.items())
         return parse_model(data, name=self.name)
+
+    def to_toml(self, path: "str | PathLike") -> Path:
+        """Write the model as a TOML model file that ``load_model`` reads back to it.
+
+        Every setting is written, defaults too, in SI units (m, kg, s, rad, N, Pa) at full
+        precision; left out are keys not given (None) and the keys of the laws a clearance
+        joint does not use (at their defaults: they change nothing).
+
+        Returns
+        -------
+        Path
+            The file written.
+        """
+        from .writing import model_toml
+
+        unused = {
+            i: {"clearance": joint.clearance.unused_law_keys()}
+            for i, joint in enumerate(self.joints)
+            if joint.clearance is not None
+        }
+        data = self.model_dump(mode="json", exclude_none=True, exclude={"joints": unused})
+        path = Path(path)
+        path.write_text(model_toml(data), encoding="utf-8")
+        return path
+
+    def _data(self) -> dict:
+        """The model as the tables of a file: SI values, keys not given left out."""
+        return self.model_dump(mode="json", exclude_none=True)
 
     @property
     def cycle(self) -> float | None:

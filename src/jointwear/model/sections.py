@@ -16,6 +16,7 @@ from ..units import (
     Acceleration2,
     Angle,
     AngularSpeed,
+    Area,
     Damping,
     Inertia,
     Length,
@@ -28,7 +29,7 @@ from ..units import (
     Velocity2,
     to_si,
 )
-from .functions import AngleFunction, DistanceFunction, ForceValue, TorqueValue
+from .functions import AngleFunction, DistanceFunction, ForceValue, PressureValue, TorqueValue
 from .tables import Name, Number, Table, one_of
 
 INTEGRATORS: dict[str, Method] = {"dopri5": Method.DOPRI5, "abm": Method.ABM}
@@ -44,13 +45,39 @@ MAX_WEAR_SNAPSHOTS = 10_000  # each holds every sector of every clearance joint
 
 
 class Ground(Table):
-    """Fixed points of the ground [m], global coordinates."""
+    """Fixed points of the ground, named by ``"ground"`` in joints.
+
+    Attributes
+    ----------
+    points
+        Name -> (x, y) [m], global coordinates.
+    """
 
     points: dict[Name, Vector2] = Field(default_factory=dict)
 
 
 class Body(Table):
-    """A moving rigid body; `position`, `angle` and velocities are initial guesses."""
+    """A moving rigid body; `position`, `angle` and velocities are initial guesses.
+
+    Attributes
+    ----------
+    name
+        Its name (letters, digits and _, starting with a letter; not ``"ground"``).
+    mass
+        Mass [kg].
+    inertia
+        Moment of inertia about the centre of mass [kg m^2].
+    position
+        (x, y) of the centre of mass [m], global; the assembly refines it.
+    angle
+        Angle of the body's x axis from the global x axis [rad].
+    velocity
+        (vx, vy) of the centre of mass [m/s].
+    angular_velocity
+        Angular velocity [rad/s], counter-clockwise positive.
+    points
+        Name -> (x, y) [m] in the body's frame (origin at the centre of mass).
+    """
 
     name: Name
     # Bounds far outside any machine part, inside what 1/m and m v^2 keep finite.
@@ -64,7 +91,20 @@ class Body(Table):
 
 
 class AngleDriver(Table):
-    """Prescribes the angle of `body` relative to `relative_to` [rad]."""
+    """Prescribes the angle of `body` relative to `relative_to` [rad].
+
+    Attributes
+    ----------
+    name
+        The driver's name (its reaction torque is the column ``torque_<name>``).
+    body
+        The driven body.
+    relative_to
+        The body its angle is measured from (``"ground"``: the global x axis).
+    function
+        The angle [rad] as a function of time [s]: a ``ConstantSpeed`` (speed [rad/s],
+        ``initial`` [rad]), a ``Polynomial`` or a ``Harmonic``.
+    """
 
     kind: ClassVar = DriverKind.ANGLE
     type: Literal["angle"] = "angle"
@@ -75,7 +115,18 @@ class AngleDriver(Table):
 
 
 class DistanceDriver(Table):
-    """Prescribes the slide of translational joint `joint` [m]."""
+    """Prescribes the slide of translational joint `joint` [m].
+
+    Attributes
+    ----------
+    name
+        The driver's name (its reaction force is the column ``force_<name>``).
+    joint
+        The ideal translational or pin-in-slot joint whose slide it sets.
+    function
+        The slide [m] as a function of time [s]: a ``ConstantSpeed`` (speed [m/s],
+        ``initial`` [m]), a ``Polynomial`` or a ``Harmonic``.
+    """
 
     kind: ClassVar = DriverKind.DISTANCE
     type: Literal["distance"] = "distance"
@@ -90,8 +141,35 @@ class DistanceDriver(Table):
 MAX_GRAVITY = 1e7  # [m/s^2] a million g
 
 
-class Gravity(Table):
-    """Uniform gravitational acceleration [m/s^2] on every body."""
+class LoadTable(Table):
+    """An applied load: whether it does work from outside, and its functions by key."""
+
+    does_work: ClassVar[bool] = False
+    FUNCTION_KEYS: ClassVar[tuple[str, ...]] = ()  # its keys whose values may be functions
+
+    @property
+    def functions(self) -> dict[str, object]:
+        """Its values that may be functions (a constant, or a function table), by key path."""
+        found = {}
+        for key in self.FUNCTION_KEYS:
+            value = getattr(self, key)
+            if isinstance(value, tuple):
+                found |= {f"{key}[{i}]": item for i, item in enumerate(value)}
+            else:
+                found[key] = value
+        return found
+
+
+class Gravity(LoadTable):
+    """Uniform gravitational acceleration on every body.
+
+    Attributes
+    ----------
+    acceleration
+        (ax, ay) [m/s^2], global, e.g. ``(0.0, "-9.81 m/s^2")``.
+    name
+        An optional name.
+    """
 
     type: Literal["gravity"] = "gravity"
     name: Name | None = None
@@ -108,10 +186,23 @@ class Gravity(Table):
         return self
 
 
-class PointForce(Table):
-    """Force [N] in global components at a named point of a body."""
+class PointForce(LoadTable):
+    """Force at a named point of a body.
+
+    Attributes
+    ----------
+    body, point
+        The body and one of its points.
+    force
+        (Fx, Fy) [N], global; each a constant or a function (a ``Polynomial`` or ``Harmonic``
+        of time, a ``Table`` or ``Fourier`` series of its argument).
+    name
+        An optional name, for its result columns.
+    """
 
     kind: ClassVar = ForceKind.POINT_FORCE
+    does_work: ClassVar[bool] = True
+    FUNCTION_KEYS: ClassVar[tuple[str, ...]] = ("force",)
     type: Literal["point_force"] = "point_force"
     name: Name | None = None
     body: str
@@ -119,18 +210,97 @@ class PointForce(Table):
     force: tuple[ForceValue, ForceValue]
 
 
-class AppliedTorque(Table):
-    """Torque [N m] on a body, counter-clockwise positive."""
+class AppliedTorque(LoadTable):
+    """Torque on a body, counter-clockwise positive.
+
+    Attributes
+    ----------
+    body
+        The body.
+    torque
+        [N m], a constant or a function (a ``Polynomial`` or ``Harmonic`` of time, a
+        ``Table`` or ``Fourier`` series of its argument: a motor's torque-speed curve).
+    name
+        An optional name, for its result columns.
+    """
 
     kind: ClassVar = ForceKind.TORQUE
+    does_work: ClassVar[bool] = True
+    FUNCTION_KEYS: ClassVar[tuple[str, ...]] = ("torque",)
     type: Literal["torque"] = "torque"
     name: Name | None = None
     body: str
     torque: TorqueValue
 
 
-class SpringDamper(Table):
-    """Translational spring-damper along the line between two points."""
+class JointForce(LoadTable):
+    """Force along a joint's axis between its two bodies (a joint that slides).
+
+    Positive pushes the second body along the axis (the slide grows) and the first body back,
+    both at the second body's joint point: a gas spring, a damper curve, an actuator.
+
+    Attributes
+    ----------
+    joint
+        A translational or pin-in-slot joint, ideal or with clearance.
+    force
+        [N], a constant or a function (e.g. a ``Table`` of ``"<joint>.slide"``).
+    name
+        An optional name, for its result columns.
+    """
+
+    kind: ClassVar = ForceKind.JOINT_FORCE
+    does_work: ClassVar[bool] = True
+    FUNCTION_KEYS: ClassVar[tuple[str, ...]] = ("force",)
+    type: Literal["joint_force"] = "joint_force"
+    name: Name | None = None
+    joint: str
+    force: ForceValue
+
+
+class JointPressure(LoadTable):
+    """A pressure on an area, acting as a ``JointForce`` of pressure times area.
+
+    The gas force on a piston (its crown's area), the oil force in a hydraulic cylinder.
+
+    Attributes
+    ----------
+    joint
+        A translational or pin-in-slot joint, ideal or with clearance.
+    area
+        [m^2], > 0.
+    pressure
+        [Pa], a constant or a function (e.g. a ``Table`` of the crank's driver over 720 deg).
+    name
+        An optional name, for its result columns.
+    """
+
+    kind: ClassVar = ForceKind.JOINT_PRESSURE
+    does_work: ClassVar[bool] = True
+    FUNCTION_KEYS: ClassVar[tuple[str, ...]] = ("pressure",)
+    type: Literal["joint_pressure"] = "joint_pressure"
+    name: Name | None = None
+    joint: str
+    area: Annotated[Area, Gt(0)]
+    pressure: PressureValue
+
+
+class SpringDamper(LoadTable):
+    """Translational spring-damper along the line between two points.
+
+    Attributes
+    ----------
+    bodies, points
+        The two bodies (``"ground"`` allowed) and a point of each.
+    stiffness
+        [N/m], >= 0.
+    damping
+        [N s/m], >= 0.
+    free_length
+        Length at which the spring carries no force [m].
+    name
+        An optional name, for its result columns.
+    """
 
     kind: ClassVar = ForceKind.SPRING_DAMPER
     type: Literal["spring_damper"] = "spring_damper"
@@ -142,8 +312,22 @@ class SpringDamper(Table):
     free_length: Annotated[Length, Ge(0)]
 
 
-class RotationalSpringDamper(Table):
-    """Rotational spring-damper on the relative angle phi_2 - phi_1."""
+class RotationalSpringDamper(LoadTable):
+    """Rotational spring-damper on the relative angle phi_2 - phi_1.
+
+    Attributes
+    ----------
+    bodies
+        The two bodies (``"ground"`` allowed).
+    stiffness
+        [N m/rad], >= 0.
+    damping
+        [N m s/rad], >= 0.
+    free_angle
+        Relative angle at which the spring carries no torque [rad].
+    name
+        An optional name, for its result columns.
+    """
 
     kind: ClassVar = ForceKind.ROTATIONAL_SPRING_DAMPER
     type: Literal["rotational_spring_damper"] = "rotational_spring_damper"
@@ -157,7 +341,13 @@ class RotationalSpringDamper(Table):
 Joint = Annotated[Union[tuple(kind.schema for kind in KINDS)], Field(discriminator="type")]  # noqa: UP007
 Driver = Annotated[AngleDriver | DistanceDriver, Field(discriminator="type")]
 Load = Annotated[
-    Gravity | PointForce | AppliedTorque | SpringDamper | RotationalSpringDamper,
+    Gravity
+    | PointForce
+    | AppliedTorque
+    | JointForce
+    | JointPressure
+    | SpringDamper
+    | RotationalSpringDamper,
     Field(discriminator="type"),
 ]
 # Solver times: above the resolution of float times near 1 s, and below 30,000 years.
@@ -165,7 +355,40 @@ SolverTime = Annotated[Time, Ge(1e-15), Le(1e12)]
 
 
 class Solver(Table):
-    """Integration and output settings; times in [s], rates in [1/s]."""
+    """Integration and output settings (docs/model-format.md, ``solver``).
+
+    Attributes
+    ----------
+    integrator
+        ``"abm"`` (Adams-Bashforth-Moulton) or ``"dopri5"`` (Dormand-Prince 5(4)).
+    rtol, atol
+        Relative [-] and absolute tolerances of the integrator.
+    min_step, max_step, initial_step
+        Step sizes [s].
+    formulation
+        ``"augmented_lagrangian"`` or ``"baumgarte"``: how constraints are met.
+    penalty
+        Augmented Lagrangian penalty [-], relative to each constraint's effective mass.
+    baumgarte_alpha, baumgarte_beta
+        Baumgarte's terms [1/s].
+    max_constraint_violation
+        2-norm of the position constraints [m and rad] that stops a run.
+    max_energy_error
+        Energy change of a conservative mechanism [-, of its energy scale] that stops a run.
+    output_interval
+        Time between output rows [s].
+    wear_snapshot_interval
+        Time between wear snapshots [s]; None: t_end / 5.
+    t_end
+        End time [s].
+    max_steps
+        Safety limit on steps.
+    assembly_tolerance
+        Tolerance of the position analysis [m].
+    settle_cycles, settle_time
+        Start-up left out of the steady-state figures, in cycles [-] or seconds [s]; give at
+        most one (None: the default settling).
+    """
 
     integrator: Annotated[str, one_of(INTEGRATORS, "integrator")] = "abm"
     rtol: Annotated[Number, Gt(0)] = 1e-6
@@ -225,7 +448,21 @@ class Solver(Table):
 
 
 class Event(Table):
-    """Crossing of a body's x or y [m] or phi [rad] through `value`."""
+    """Crossing of a body's x or y [m] or phi [rad] through `value`.
+
+    Attributes
+    ----------
+    name
+        The event's name.
+    body
+        The body whose coordinate is watched.
+    coordinate
+        ``"x"``, ``"y"`` (its centre of mass [m]) or ``"phi"`` (its angle [rad]).
+    value
+        The level crossed [m or rad].
+    direction
+        ``"rising"``, ``"falling"`` or ``"any"``.
+    """
 
     name: Name
     body: str

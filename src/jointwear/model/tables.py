@@ -4,9 +4,17 @@ import math
 import re
 from typing import Annotated
 
-from pydantic import AfterValidator, AllowInfNan, BaseModel, ConfigDict, Strict, model_validator
+from pydantic import (
+    AfterValidator,
+    AllowInfNan,
+    BaseModel,
+    ConfigDict,
+    Strict,
+    ValidationError,
+    model_validator,
+)
 
-from .errors import did_you_mean, unknown
+from .errors import did_you_mean, from_validation_error, unknown
 
 
 def one_of(table: dict[str, object], what: str) -> AfterValidator:
@@ -35,13 +43,33 @@ Number = Annotated[float, Strict(), AllowInfNan(False)]
 
 
 class Table(BaseModel):
-    """A table of the model file: immutable, unknown keys refused."""
+    """A table of the model file: immutable, unknown keys refused.
+
+    Built in Python, ``Table(key=value, ...)`` takes the values a file would (SI numbers,
+    strings with units, pint Quantities) and raises ``ModelError`` with the same lines as
+    ``load_model`` gives, their paths starting at this table.
+    """
 
     model_config = ConfigDict(extra="forbid", frozen=True)
+
+    def __init__(self, /, **data: object) -> None:
+        try:
+            super().__init__(**data)
+        except ValidationError as error:
+            raise from_validation_error(error, data, type(self).__name__) from None
+
+    # Validates as pydantic's own: a table inside another is validated without this __init__,
+    # so that its problems reach the outer table's message with their whole path (pydantic
+    # marks its BaseModel.__init__, and RootModel's, the same way).
+    __init__.__pydantic_base_init__ = True  # type: ignore[attr-defined]
 
     @model_validator(mode="before")
     @classmethod
     def _known_keys(cls, data: object) -> object:
+        if isinstance(data, Table) and cls is not type(data) and issubclass(cls, type(data)):
+            # A general table where this, its version for one quantity, is wanted (a
+            # Harmonic as an angle driver's function): its values are read as this one's.
+            data = dict(data)
         if isinstance(data, dict):
             known = cls.known_keys()
             extra = [key for key in data if key not in known]

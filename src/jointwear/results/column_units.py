@@ -33,7 +33,13 @@ BODY = {
     "alpha": "rad/s^2",
 }  # <quantity>_<body>: system.BODY_COLUMNS
 DRIVER = {"torque": "N m", "force": "N"}  # <kind>_<driver>
-LOAD = {"fx": "N", "fy": "N", "force": "N", "torque": "N m"}  # system.LOAD_QUANTITIES
+LOAD = {
+    "fx": "N",
+    "fy": "N",
+    "force": "N",
+    "torque": "N m",
+    "pressure": "Pa",
+}  # system.LOAD_QUANTITIES
 IDEAL_JOINT = {"fx": "N", "fy": "N"}  # <joint>_<quantity>: an ideal joint's reaction
 NAMED = {
     "time": "s",

@@ -22,7 +22,7 @@ def unaccounted(model: Model) -> str | None:
         if driver.type != "angle":
             return f"driver '{driver.name}' moves a distance: its work is not in the time series"
     for force in model.forces:
-        if force.type in ("point_force", "torque"):
+        if force.does_work:
             kind = force.type.replace("_", " ")
             return f"the work of an applied {kind} is not in the time series"
         if getattr(force, "damping", 0.0) > 0.0:

@@ -43,7 +43,24 @@ def _even(sectors: int) -> int:
 class PinInSlotClearance(ClearanceTable):
     """A pin-in-slot joint with clearance: pin in a round-ended slot (SI).
 
-    Material pairs are [slot, pin].
+    Material pairs are [slot, pin]; the keys every clearance table has are those of
+    ``ClearanceTable`` (width [m], moduli [Pa], laws and their keys).
+
+    Attributes
+    ----------
+    pin_radius
+        R_p [m].
+    slot_width
+        2 R_s [m], > 2 R_p.
+    slot_length
+        Distance between the centres of the slot's round ends [m], centred on the joint's
+        first point; 0 is a round hole.
+    pin_wear_share
+        The pin's share of the worn volume [-], 0 to 1.
+    segments
+        Wear cells along each side, 1 to 100000.
+    sectors
+        Wear cells of a full turn (the pin; each end has half), even, 4 to 100000.
     """
 
     pin_radius: PositiveLength
@@ -123,6 +140,19 @@ class PinInSlotJoint(JointTable):
     Ideal without `clearance`: the pin's centre on the slot's centre line, which has no end.
     With it, `bodies[0]` has the slot and `bodies[1]` the pin, which touch through contact
     forces instead of the constraint.
+
+    Attributes
+    ----------
+    name
+        The joint's name.
+    bodies
+        (first body, second body); ``"ground"`` allowed.
+    points
+        (a point of the first body, a point of the second).
+    axis
+        Direction of the slot in the first body's frame (any non-zero length).
+    clearance
+        A ``PinInSlotClearance``, or None: an ideal joint.
     """
 
     kind: ClassVar = JointKind.POINT_ON_LINE

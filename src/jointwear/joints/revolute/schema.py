@@ -23,7 +23,24 @@ from ...units import to_si
 class RevoluteClearance(ClearanceTable):
     """A revolute joint with clearance: journal in bearing, contact, friction and wear (SI).
 
-    Material pairs are [bearing, journal].
+    Material pairs are [bearing, journal]; the keys every clearance table has are those of
+    ``ClearanceTable`` (width [m], moduli [Pa], laws and their keys).
+
+    Attributes
+    ----------
+    bearing_radius
+        R_B, radius of the hole [m].
+    journal_radius
+        R_J, radius of the pin [m], < R_B.
+    radial_clearance
+        c [m], instead of ``bearing_radius``: R_B = R_J + c.
+    journal_wear_share
+        The journal's share of the worn volume [-], 0 to 1.
+    wear_distribution
+        How a step's wear goes into the sectors: ``"hertz"``, ``"peak"`` or
+        ``"elastic_foundation"``.
+    sectors
+        Sectors per surface, 4 to 100000.
     """
 
     FAMILIES: ClassVar[tuple[Family, ...]] = EVERY
@@ -105,6 +122,17 @@ class RevoluteJoint(JointTable):
 
     Ideal without `clearance`; with it, `bodies[0]` has the bearing and `bodies[1]` the
     journal, and the joint acts through contact forces instead of constraints.
+
+    Attributes
+    ----------
+    name
+        The joint's name.
+    bodies
+        (first body, second body); ``"ground"`` allowed.
+    points
+        (a point of the first body, a point of the second).
+    clearance
+        A ``RevoluteClearance``, or None: an ideal joint.
     """
 
     kind: ClassVar = JointKind.REVOLUTE

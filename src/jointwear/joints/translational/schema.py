@@ -30,7 +30,24 @@ from ...model.tables import JointTable, Number, unit_axis
 class TranslationalClearance(ClearanceTable):
     """A translational joint with clearance: slider in guide, contact, friction and wear (SI).
 
-    Material pairs are [guide, slider].
+    Material pairs are [guide, slider]; the keys every clearance table has are those of
+    ``ClearanceTable`` (width [m], moduli [Pa], laws and their keys).
+
+    Attributes
+    ----------
+    slider_length, slider_height
+        The slider's size along and across the axis [m].
+    guide_height, gap
+        The guide's inner height, or the gap on each side of the slider [m]; give one.
+    guide_length
+        Length of the guide [m], centred on the joint's first point; None: unbounded.
+    corner_radius
+        Rounding of the slider's corners and the guide's end edges [m]; it sets the
+        contact stiffness only (or give ``contact_stiffness`` [N/m^n]).
+    slider_wear_share
+        The slider's share of the worn volume [-], 0 to 1.
+    segments
+        Segments per worn surface, along its length, 1 to 100000.
     """
 
     slider_length: PositiveLength
@@ -111,6 +128,19 @@ class TranslationalJoint(JointTable):
     Ideal without `clearance`; with it, `bodies[0]` has the guide (its centreline through
     `points[0]`) and `bodies[1]` the slider (centred on `points[1]`), which touch through
     contact forces instead of constraints.
+
+    Attributes
+    ----------
+    name
+        The joint's name.
+    bodies
+        (first body, second body); ``"ground"`` allowed.
+    points
+        (a point of the first body, a point of the second).
+    axis
+        Direction of the slide in the first body's frame (any non-zero length).
+    clearance
+        A ``TranslationalClearance``, or None: an ideal joint.
     """
 
     kind: ClassVar = JointKind.TRANSLATIONAL

@@ -111,17 +111,16 @@ def cycle_driver(model: Model) -> tuple[str, float]:
     functions = [(f"drivers[{i}]", d.function, d.type, d.name) for i, d in enumerate(model.drivers)]
     named = {label: f"{label} '{name}'" for label, _, _, name in functions}  # for messages
     for i, load in enumerate(model.forces):
-        values = load.force if load.type == "point_force" else (getattr(load, "torque", 0.0),)
         label = f"forces[{i}]"
         named[label] = label if load.name is None else f"{label} '{load.name}'"
-        functions += [(label, value, "load", None) for value in values]
+        functions += [(label, value, "load", None) for value in load.functions.values()]
     for label, function, kind, driver in functions:
-        repeat = period(function, kind)
+        repeat = period(function, kind, model.drivers)
         if repeat is None:
             problems.append(
-                f"{label}: a {function.type} function of time never repeats; a life run needs "
+                f"{label}: a {function.type} function never repeats; a life run needs "
                 "periodic drivers and loads: angle drivers at constant_speed, harmonic "
-                "functions or constants"
+                "functions, tables or series with a period, or constants"
             )
         elif repeat > 0.0:
             periods[label] = repeat
