@@ -351,3 +351,11 @@ def test_the_kernel_and_record_constants_agree():
     assert records.N_KEYS == kernel.N_KEYS
     arities = {len(role.arguments) for roles in records.ROLES.values() for role in roles}
     assert max(arities) == kernel.ARGUMENTS
+
+
+def test_a_model_with_user_laws_round_trips_through_to_toml(tmp_path):
+    model = parse(fourbar_text(USER_LAWS, {**TWIN_KEYS, "still_speed": "0.2 mm/s"}))
+    model.to_toml(tmp_path / "again.toml")
+    again = jw.load_model(tmp_path / "again.toml")
+    assert again == model
+    assert again.joint("coupler_follower").clearance.model_extra["still_speed"] == 2e-4
