@@ -11,10 +11,10 @@ then the values of its own keys, in the order they were declared (SI):
 
 | family | function | arguments before its keys | returns |
 |---|---|---|---|
-| normal_law | ``force`` (``energy``, ``stiffness``)| delta, k, n, e_star, d_r, width | N (J, N/m) |
-| damping | ``hysteresis``: chi | c_e | - |
-| friction_law | ``force`` (``sliding``: speed) | v_t, f_n, c_f (v_t) | N (m/s) |
-| wear_law | ``coefficient``: dh/ds / p | mu | 1/Pa |
+| normal_law | force (energy, stiffness) | delta, k, n, e_star, d_r, width | N (J, N/m) |
+| damping | hysteresis: chi | c_e | - |
+| friction_law | force (sliding: speed) | v_t, f_n, c_f (v_t) | N (m/s) |
+| wear_law | coefficient: dh/ds / p | mu | 1/Pa |
 
 The symbols are those of ``kernels.laws.normal``, ``friction`` and ``wear``: k and n are
 Hertz's K and exponent, from the keys ``contact_stiffness`` (or the stiffness formula) and
