@@ -1,4 +1,5 @@
-"""What the runtime needs: scipy only in tests, benchmarks and export; Dask only for clusters."""
+"""What the runtime loads: scipy only when a model has a table or a run is exported; Dask only
+for clusters."""
 
 import ast
 import sys
@@ -34,14 +35,20 @@ def _top_level(tree: ast.Module) -> set[ast.AST]:
     return {node for _, node in _imports(tree) if node not in inside}
 
 
-def test_the_package_imports_scipy_only_to_export_and_dask_only_inside_functions():
+SCIPY_USERS = {  # the .mat writer, and the interpolants of a table function
+    SOURCE / "results" / "export.py",
+    SOURCE / "mechanism" / "functions.py",
+}
+
+
+def test_the_package_imports_scipy_and_dask_only_inside_the_functions_that_need_them():
     for path in sorted(SOURCE.rglob("*.py")):
         tree = ast.parse(path.read_text(), filename=str(path))
         top = _top_level(tree)
         for module, node in _imports(tree):
             root = module.split(".")[0]
-            if root == "scipy":  # the export extra's .mat writer
-                assert path == SOURCE / "results" / "export.py", f"{path} imports scipy"
+            if root == "scipy":
+                assert path in SCIPY_USERS, f"{path} imports scipy"
             if root in ("dask", "distributed", "scipy", "xarray", "h5netcdf"):
                 assert node not in top, f"{path.relative_to(ROOT)} imports {module} at load"
 

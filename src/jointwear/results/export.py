@@ -11,7 +11,8 @@
   columns are cell arrays), field names made valid MATLAB names; ``units`` holds a struct
   per table with each field's unit; ``summary`` and ``model`` are JSON text.
 
-Both need the ``export`` extra: ``pip install 'jointwear[export]'``.
+netCDF needs the ``export`` extra, ``pip install 'jointwear[export]'``; scipy, which writes
+``.mat``, is a dependency of jointwear.
 """
 
 from __future__ import annotations

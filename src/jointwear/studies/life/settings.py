@@ -118,7 +118,8 @@ def cycle_driver(model: Model) -> tuple[str, float]:
         repeat = period(function, kind, model.drivers)
         if repeat is None:
             problems.append(
-                f"{label}: a {function.type} function never repeats; a life run needs "
+                f"{label}: a {function.type} function of {getattr(function, 'argument', 'time')} "
+                "never repeats; a life run needs "
                 "periodic drivers and loads: angle drivers at constant_speed, harmonic "
                 "functions, tables or series with a period, or constants"
             )
