@@ -247,5 +247,6 @@ def test_misspelled_law_is_one_line_listing_the_known_laws(key, wrong, what, kno
     assert result.stdout == ""
     assert result.stderr.splitlines() == [
         f"joints[2].clearance.{key}: unknown {what} '{wrong}'; known {what}s are {known} "
-        f"(did you mean '{meant}'?)"
+        f"(did you mean '{meant}'?); a law of your own must be registered before the model is "
+        "loaded (jointwear.register_law)"
     ]
