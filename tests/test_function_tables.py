@@ -210,3 +210,11 @@ def test_a_spreadsheet_s_semicolons_or_tabs_separate_the_cells(tmp_path, separat
     spec = {"type": "table", "file": str(path)}
     torque = jw.parse_model(rotor(spec, t_end=0.001)).forces[0].torque
     assert torque.x == pytest.approx((0.0, 1e-3)) and torque.y == pytest.approx((1.0, 1.5))
+
+
+def test_a_table_built_in_python_has_its_units_checked_where_it_is_used():
+    model = jw.parse_model(rotor(0.0))
+    degrees = jw.TableFunction(x=["0 deg", "90 deg"], y=[1.0, 2.0])  # for a time argument
+    with pytest.raises(jw.ModelError, match=r"forces\[0\].torque.x: '0 deg' has units of angle"):
+        jw.Model(name="rotor", ground=model.ground, bodies=model.bodies, joints=model.joints,
+                 forces=[jw.AppliedTorque(body="disc", torque=degrees)])  # fmt: skip

@@ -117,6 +117,10 @@ class FunctionOfArgument(Table):
     @model_validator(mode="wrap")
     @classmethod
     def _argument_values_in_si(cls, data: Any, handler: ValidatorFunctionWrapHandler) -> Any:
+        if isinstance(data, FunctionOfArgument):  # built in Python, given where it is used
+            table = handler(data)
+            table._given = table._given or data._given
+            return table
         if not isinstance(data, dict):
             return handler(data)
         data = cls._inline(dict(data))
