@@ -5,16 +5,13 @@ over the cycles after the first: the peak gas force, the piston's slap (its larg
 contact force, impacts per cycle, time in contact, largest tilt), the wrist pin's largest
 force, the work the gas does per cycle (its force times the piston's speed, and the p-V
 integral of the table over the crank angle), the crank's mean torque, and the wear per cycle
-of the liner and the skirt. With ``--life CYCLES`` it then runs ``jointwear life`` of the
-liner to that many cycles and prints its milestones.
+of the liner and the skirt. Its life is ``jointwear life`` (docs/user-guide.md).
 
-    python benchmarks/engine.py [--life 30000000]
+    python benchmarks/engine.py
 """
 
 from __future__ import annotations
 
-import argparse
-import tempfile
 from pathlib import Path
 
 import numpy as np
@@ -79,24 +76,13 @@ def pv_work() -> float:
 
 
 def main() -> None:
-    """Run the example, print its table; with --life, the liner's life run."""
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--life", type=int, default=0, help="cycles of a life run (0: none)")
-    args = parser.parse_args()
+    """Run the example and print its table."""
     results = jw.simulate(jw.load_model(EXAMPLE))
     assert results.status == "success", results.message
     print("| figure | value |\n|---|---|")
     for key, value in headline(results).items():
         print(f"| {key} | {value} |")
     print(f"| p dV of the pressure table per cycle | {pv_work():.1f} J |")
-    if args.life:
-        with tempfile.TemporaryDirectory() as folder:
-            life = jw.life(EXAMPLE, Path(folder) / "life", cycles=args.life, band=())
-            rows = life.table
-            last = rows.iloc[-1]
-            print(f"\nlife: {life.status}, {last['cycle']:.4g} cycles "
-                  f"({last['cycle'] * results.model.cycle / 3600:.4g} h at 3000 rpm)")  # fmt: skip
-            print(rows.filter(regex="cycle|liner").iloc[:: max(1, len(rows) // 8)].to_string())
 
 
 if __name__ == "__main__":
