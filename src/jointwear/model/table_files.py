@@ -46,7 +46,7 @@ def read_columns(
         raise ValueError(f"{path}: needs a header row and at least two rows of numbers")
     if len(rows) > MAX_ROWS + 1:
         raise ValueError(f"{path}: has {len(rows) - 1} rows; at most {MAX_ROWS} are allowed")
-    names, units = zip(*(_HEADER.fullmatch(cell).groups() for cell in rows[0]), strict=True)
+    names, units = zip(*(_header_cell(path, cell) for cell in rows[0]), strict=True)
     picked = _pick(path, list(names), columns)
     values: list[list[float]] = [[], []]
     for number, row in enumerate(rows[1:], start=2):
@@ -59,6 +59,17 @@ def read_columns(
                     f"{path}, row {number}, column '{names[column]}': {cell!r} is not a number"
                 ) from None
     return values[0], units[picked[0]] or None, values[1], units[picked[1]] or None
+
+
+def _header_cell(path: str, cell: str) -> tuple[str, str | None]:
+    """A header cell's name and unit; ValueError for brackets that do not close around a unit."""
+    name, unit = _HEADER.fullmatch(cell).groups()
+    if "[" in name or "]" in name:
+        raise ValueError(
+            f"{path}: header cell {cell.strip()!r} does not read 'name [unit]'; give the unit "
+            "in one pair of brackets at the cell's end (none: SI numbers)"
+        )
+    return name, unit
 
 
 def _dialect(lines: list[str]) -> type[csv.Dialect]:

@@ -1,0 +1,31 @@
+"""Tables, series and CSV files a user may bring that floating point or the reader cannot take:
+each is refused with a line naming the field, never a crash or a run that stops later."""
+
+import mechanisms
+import pytest
+
+import jointwear as jw
+from jointwear.mechanism.system import build_system
+
+
+def rotor(torque: object) -> jw.Model:
+    return jw.parse_model(mechanisms.rotor(torque, solver={"t_end": 1e-3}))
+
+
+@pytest.mark.parametrize(
+    "torque",
+    [
+        {"type": "table", "x": [0.0, 1.0, 1e308], "y": [0.0, 1.0, 2.0]},  # slopes overflow
+        {"type": "table", "x": [0.0, 1e-300, 1.0], "y": [0.0, 1.0, 2.0]},  # 1 / h overflows
+        {"type": "fourier", "period": 1e-308, "cosine": [1.0]},  # 2 pi / period overflows
+    ],
+)
+def test_a_function_whose_coefficients_overflow_is_refused_naming_it(torque):
+    with pytest.raises(jw.ModelError, match=r"forces\[0\]\.torque: .*not finite"):
+        build_system(rotor(torque))
+
+
+def test_a_header_cell_with_an_unclosed_bracket_is_refused_not_read_as_si(tmp_path):
+    (tmp_path / "curve.csv").write_text("time [ms], torque [kN*m\n0, 1\n1, 2\n")
+    with pytest.raises(jw.ModelError, match=r"curve.csv: header cell 'torque \[kN\*m'"):
+        rotor({"type": "table", "file": str(tmp_path / "curve.csv")})
