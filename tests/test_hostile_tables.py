@@ -2,6 +2,7 @@
 each is refused with a line naming the field, never a crash or a run that stops later."""
 
 import mechanisms
+import numpy as np
 import pytest
 
 import jointwear as jw
@@ -29,3 +30,15 @@ def test_a_header_cell_with_an_unclosed_bracket_is_refused_not_read_as_si(tmp_pa
     (tmp_path / "curve.csv").write_text("time [ms], torque [kN*m\n0, 1\n1, 2\n")
     with pytest.raises(jw.ModelError, match=r"curve.csv: header cell 'torque \[kN\*m'"):
         rotor({"type": "table", "file": str(tmp_path / "curve.csv")})
+
+
+def test_points_given_as_an_array_quantity_are_read_in_their_units():
+    pint = pytest.importorskip("pint")
+    units = pint.UnitRegistry()
+    table = jw.TableFunction(
+        x=units.Quantity(np.array([0.0, 20.0]), "ms"),
+        y=units.Quantity(np.array([1.0, 2.0]), "kN*m"),
+    )
+    torque = rotor(table).forces[0].torque
+    assert torque.x == (0.0, 0.02)
+    assert torque.y == (1e3, 2e3)

@@ -127,6 +127,8 @@ class FunctionOfArgument(Table):
         given, kinds = {}, {}
         for key in cls.ARGUMENT_KEYS:
             value = data.get(key)
+            if getattr(value, "ndim", 0) > 0:  # an array, or an array Quantity: its items
+                value = list(value)
             items = value if isinstance(value, list | tuple) else [value]
             dimensions = [_dimension(key, i, item, value) for i, item in enumerate(items)]
             with_units = {d for d in dimensions if d is not None}
