@@ -42,3 +42,11 @@ def test_points_given_as_an_array_quantity_are_read_in_their_units():
     torque = rotor(table).forces[0].torque
     assert torque.x == (0.0, 0.02)
     assert torque.y == (1e3, 2e3)
+
+
+def test_a_file_given_to_a_saved_table_replaces_its_points_in_the_new_file_s_units(tmp_path):
+    (tmp_path / "a.csv").write_text("time [ms], torque [N*m]\n0, 1\n10, 2\n")
+    (tmp_path / "b.csv").write_text("time [ms], torque [kN*m]\n0, 3\n20, 4\n")
+    saved = rotor({"type": "table", "file": str(tmp_path / "a.csv")})  # holds a.csv's points
+    torque = saved.with_values({"forces.0.torque.file": str(tmp_path / "b.csv")}).forces[0].torque
+    assert (torque.x, torque.y, torque.source) == ((0.0, 0.02), (3e3, 4e3), str(tmp_path / "b.csv"))

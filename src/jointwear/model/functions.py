@@ -220,11 +220,12 @@ class TableFunction(FunctionOfArgument, Generic[_T]):
     @classmethod
     def _inline(cls, data: dict) -> dict:
         if data.get("file") is not None:
-            if "x" in data or "y" in data:
+            # A saved table holds the points of its source: a file given to it replaces them.
+            if data.get("source") is None and ("x" in data or "y" in data):
                 raise ValueError("give the points as x and y, or in a file, not both")
             path = str(data.pop("file"))
             x, x_unit, y, y_unit = read_columns(path, data.pop("columns", None))
-            data = {"x": x, "y": y, "x_unit": x_unit, "y_unit": y_unit, "source": path, **data}
+            data |= {"x": x, "y": y, "x_unit": x_unit, "y_unit": y_unit, "source": path}
         for key in ("x", "y"):
             unit = data.pop(f"{key}_unit", None)
             if unit is not None and isinstance(data.get(key), list | tuple):
