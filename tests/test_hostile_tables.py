@@ -50,3 +50,10 @@ def test_a_file_given_to_a_saved_table_replaces_its_points_in_the_new_file_s_uni
     saved = rotor({"type": "table", "file": str(tmp_path / "a.csv")})  # holds a.csv's points
     torque = saved.with_values({"forces.0.torque.file": str(tmp_path / "b.csv")}).forces[0].torque
     assert (torque.x, torque.y, torque.source) == ((0.0, 0.02), (3e3, 4e3), str(tmp_path / "b.csv"))
+
+
+def test_x_unit_and_y_unit_give_the_units_of_a_header_without_brackets(tmp_path):
+    (tmp_path / "a.csv").write_text("time, torque\n0, 1\n10, 2\n")
+    table = {"type": "table", "file": str(tmp_path / "a.csv"), "x_unit": "ms", "y_unit": "kN*m"}
+    torque = rotor(table).forces[0].torque
+    assert (torque.x, torque.y) == ((0.0, 0.01), (1e3, 2e3))

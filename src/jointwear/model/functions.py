@@ -225,6 +225,7 @@ class TableFunction(FunctionOfArgument, Generic[_T]):
                 raise ValueError("give the points as x and y, or in a file, not both")
             path = str(data.pop("file"))
             x, x_unit, y, y_unit = read_columns(path, data.pop("columns", None))
+            x_unit, y_unit = x_unit or data.get("x_unit"), y_unit or data.get("y_unit")
             data |= {"x": x, "y": y, "x_unit": x_unit, "y_unit": y_unit, "source": path}
         for key in ("x", "y"):
             unit = data.pop(f"{key}_unit", None)
