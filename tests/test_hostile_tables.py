@@ -57,3 +57,16 @@ def test_x_unit_and_y_unit_give_the_units_of_a_header_without_brackets(tmp_path)
     table = {"type": "table", "file": str(tmp_path / "a.csv"), "x_unit": "ms", "y_unit": "kN*m"}
     torque = rotor(table).forces[0].torque
     assert (torque.x, torque.y) == ((0.0, 0.01), (1e3, 2e3))
+
+
+def test_a_file_under_set_is_named_relative_to_the_extending_file(tmp_path, monkeypatch):
+    (tmp_path / "a.csv").write_text("time [ms], torque [N*m]\n0, 1\n10, 2\n")
+    rotor({"type": "table", "file": str(tmp_path / "a.csv")}).to_toml(tmp_path / "base.toml")
+    (tmp_path / "variants").mkdir()
+    (tmp_path / "variants" / "b.csv").write_text("time [ms], torque [N*m]\n0, 3\n10, 4\n")
+    (tmp_path / "variants" / "b.toml").write_text(
+        'extends = "../base.toml"\n[set]\n"forces.0.torque.file" = "b.csv"\n'
+    )
+    monkeypatch.chdir(tmp_path)
+    torque = jw.load_model("variants/b.toml").forces[0].torque
+    assert torque.y == (3.0, 4.0)
