@@ -70,3 +70,10 @@ def test_a_file_under_set_is_named_relative_to_the_extending_file(tmp_path, monk
     monkeypatch.chdir(tmp_path)
     torque = jw.load_model("variants/b.toml").forces[0].torque
     assert torque.y == (3.0, 4.0)
+
+
+@pytest.mark.parametrize("columns", ["torque", ["time", "torque", "speed"], [0, 1]])
+def test_columns_must_name_two_columns(tmp_path, columns):
+    (tmp_path / "a.csv").write_text("time, torque, speed\n0, 1, 2\n1, 2, 3\n")
+    with pytest.raises(jw.ModelError, match=r"forces\[0\]\.torque: columns: .*two"):
+        rotor({"type": "table", "file": str(tmp_path / "a.csv"), "columns": columns})
