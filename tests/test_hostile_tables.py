@@ -77,3 +77,14 @@ def test_columns_must_name_two_columns(tmp_path, columns):
     (tmp_path / "a.csv").write_text("time, torque, speed\n0, 1, 2\n1, 2, 3\n")
     with pytest.raises(jw.ModelError, match=r"forces\[0\]\.torque: columns: .*two"):
         rotor({"type": "table", "file": str(tmp_path / "a.csv"), "columns": columns})
+
+
+def test_a_driver_named_time_is_refused_where_a_function_of_time_would_hide_it():
+    data = mechanisms.rotor(
+        {"type": "table", "argument": "time", "x": ["0 deg", "720 deg"], "y": [0.0, 1.0]},
+        solver={"t_end": 1e-3},
+    )
+    data["drivers"] = [{"name": "time", "type": "angle", "body": "disc",
+                        "function": {"type": "constant_speed", "speed": 1.0}}]  # fmt: skip
+    with pytest.raises(jw.ModelError, match=r"drivers\[0\]\.name: 'time' .* rename"):
+        jw.parse_model(data)
