@@ -88,3 +88,17 @@ def test_a_driver_named_time_is_refused_where_a_function_of_time_would_hide_it()
                         "function": {"type": "constant_speed", "speed": 1.0}}]  # fmt: skip
     with pytest.raises(jw.ModelError, match=r"drivers\[0\]\.name: 'time' .* rename"):
         jw.parse_model(data)
+
+
+def test_a_unit_in_parentheses_is_refused_not_read_as_si(tmp_path):
+    (tmp_path / "curve.csv").write_text("time (ms), torque (kN*m)\n0, 1\n1, 2\n")
+    with pytest.raises(jw.ModelError, match=r"curve.csv: header cell 'time \(ms\)'.*'time \[ms\]'"):
+        rotor({"type": "table", "file": str(tmp_path / "curve.csv")})
+
+
+def test_a_header_name_with_words_in_parentheses_is_a_name(tmp_path):
+    (tmp_path / "curve.csv").write_text("time (run 2) [ms], torque [N*m]\n0, 1\n1, 2\n")
+    assert rotor({"type": "table", "file": str(tmp_path / "curve.csv")}).forces[0].torque.x == (
+        0.0,
+        1e-3,
+    )

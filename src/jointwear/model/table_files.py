@@ -9,8 +9,11 @@ import csv
 import re
 from pathlib import Path
 
+from ..units import unit_of
+
 MAX_ROWS = 100_000  # a table function's points: far more than a measured cycle has
 _HEADER = re.compile(r"\s*(.*?)\s*(?:\[\s*(.*?)\s*\])?\s*")
+_PARENTHESES = re.compile(r"(.*?)\s*\(\s*([^()]*?)\s*\)")  # "time (ms)": a unit?
 
 
 def resolve_files(data: object, folder: Path) -> object:
@@ -68,6 +71,13 @@ def _header_cell(path: str, cell: str) -> tuple[str, str | None]:
         raise ValueError(
             f"{path}: header cell {cell.strip()!r} does not read 'name [unit]'; give the unit "
             "in one pair of brackets at the cell's end (none: SI numbers)"
+        )
+    in_parentheses = _PARENTHESES.fullmatch(name)
+    if unit is None and in_parentheses and unit_of(f"1 {in_parentheses.group(2)}"):
+        bracketed = f"{in_parentheses.group(1)} [{in_parentheses.group(2)}]"
+        raise ValueError(
+            f"{path}: header cell {cell.strip()!r}: give the unit in square brackets, "
+            f"{bracketed!r} (a cell without them is a column of SI numbers)"
         )
     return name, unit
 
