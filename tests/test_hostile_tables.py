@@ -4,6 +4,7 @@ each is refused with a line naming the field, never a crash or a run that stops 
 import mechanisms
 import numpy as np
 import pytest
+from runs import EXAMPLES
 
 import jointwear as jw
 from jointwear.mechanism.system import build_system
@@ -101,4 +102,17 @@ def test_a_header_name_with_words_in_parentheses_is_a_name(tmp_path):
     assert rotor({"type": "table", "file": str(tmp_path / "curve.csv")}).forces[0].torque.x == (
         0.0,
         1e-3,
+    )
+
+
+def test_a_state_table_left_by_a_constrained_mechanism_is_named_in_the_stop_message():
+    """The slider-crank's slider passes 1 m/s within 0.1 ms: the table's NaN stops the run."""
+    table = {"type": "table", "argument": "slider_guide.slide_speed", "x": [-1.0, 1.0],
+             "y": [0.0, 0.0]}  # fmt: skip
+    model = jw.load_model(EXAMPLES / "slider_crank.toml", ["solver.t_end=0.003"])
+    force = jw.JointForce(joint="slider_guide", force=table)
+    results = jw.simulate(model.with_values({"forces": [*model.forces, force]}))
+    assert results.status in ("singular", "non_finite")
+    assert "forces[1].force is a table of slider_guide.slide_speed from -1 to 1" in (
+        results.message
     )
