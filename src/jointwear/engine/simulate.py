@@ -184,8 +184,9 @@ def simulate(
     done = drive(model, arrays, contacts, (windows, energy), t0, progress, status)
     t_reached = integrators.time(integ)
     status, detail = done.status, done.detail
-    if status == Status.NON_FINITE and not detail:
-        detail = status_message(status) + left_tables(model, integrators.state(integ))
+    if status in (Status.NON_FINITE, Status.SINGULAR) and not detail:  # a table left gives a
+        certain = status == Status.NON_FINITE  # NaN load, whose solve may fail as singular
+        detail = status_message(status) + left_tables(model, integrators.state(integ), certain)
     if lock is not None and t_reached - t0 >= LOCK_NEAR * lock.time and status in LOCK_FAILURES:
         status, detail = Status.LOCK_UP, lock.message()  # how the dynamics meet the lock-up
     wall = time.perf_counter() - wall_start

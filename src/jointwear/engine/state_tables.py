@@ -19,8 +19,12 @@ from ..model.arguments import resolve
 from ..model.functions import TableFunction
 
 
-def left_tables(model: Model, y: NDArray[np.float64]) -> str:
-    """The state tables without a period, their ranges, and their arguments at state y [SI]."""
+def left_tables(model: Model, y: NDArray[np.float64], certain: bool = True) -> str:
+    """The state tables without a period, their ranges, and their arguments at state y [SI].
+
+    ``certain``: the run stopped as non-finite; else (singular: a NaN load makes the
+    constraints' solve fail as well) the tables are named as a possible cause.
+    """
     n = y.shape[0] // 2
     q, qd = y[:n], y[n:]
     found = []
@@ -39,8 +43,9 @@ def left_tables(model: Model, y: NDArray[np.float64]) -> str:
             )
     if not found:
         return ""
+    lead = "; " if certain else "; or a table of the state was left: "
     return (
-        f"; {'; '.join(found)}: a run stops where it leaves a table's points; give points "
+        f"{lead}{'; '.join(found)}: a run stops where it leaves a table's points; give points "
         "that cover the motion"
     )
 

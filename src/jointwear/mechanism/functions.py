@@ -38,10 +38,17 @@ class FunctionRows:
         self.geometry: list[tuple[float, ...]] = []
         self.data: list[float] = []
         self._tables: list[tuple[int, str, TableFunction]] = []  # to check against the run
+        self._overflows: list[str] = []  # functions floating point cannot hold
 
     def add(self, spec: object, path: str, initial: float = 0.0) -> int:
         """Add a constant or a function table of the model (at ``path`` in the file)."""
+        first = len(self.data)
         kind, values = self._parameters(spec, initial)
+        if not np.isfinite(values).all() or not np.isfinite(self.data[first:]).all():
+            self._overflows.append(
+                f"{path}: its coefficients are not finite numbers (its points or period are too "
+                "close together or too far apart for floating point); rescale its x values"
+            )
         row = np.zeros(MAX_COEFFICIENTS)
         row[: len(values)] = values
         self.kind.append(int(kind))
@@ -99,7 +106,9 @@ class FunctionRows:
         return bodies, (*points, *joint.axis)
 
     def range_problems(self, mechanism: object) -> list[str]:
-        """One line per table without a period whose argument leaves its points in the run.
+        """One line per function that overflows, or per table that the run leaves.
+
+        A table without a period is left when its argument leaves its points in the run.
 
         Only arguments known before the run are judged: the time, and a driver's value
         (sampled over the run, and over a whole period of a driver whose values repeat). A
@@ -107,6 +116,8 @@ class FunctionRows:
         """
         from ..kernels.functions import evaluate  # compiled: only when there is a table
 
+        if self._overflows:  # their values cannot be sampled
+            return self._overflows
         problems = []
         t_end = self.model.solver.t_end
         for row, path, table in self._tables:
@@ -142,23 +153,35 @@ class FunctionRows:
 
 
 def piecewise_cubic(table: TableFunction) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-    """Breakpoints (n + 1) and cubic coefficients (4, n) of a table's interpolant [SI]."""
+    """Breakpoints (n + 1) and cubic coefficients (4, n) of a table's interpolant [SI].
+
+    Coefficients NaN where floating point cannot hold them (``FunctionRows`` refuses them).
+    """
+    x, y = (np.asarray(v, dtype=float) for v in table.points())
+    with np.errstate(all="ignore"):  # an overflow shows as non-finite coefficients
+        try:
+            pieces = _interpolant(x, y, table.interpolation, table.period is not None)
+        except ValueError:  # scipy refuses the non-finite slopes of an overflow
+            return x, np.full((4, x.size - 1), np.nan)
+        columns = np.searchsorted(pieces.x, x[:-1], side="right") - 1  # the intervals of x
+        return x, _cubic(pieces.c[:, columns])
+
+
+def _interpolant(
+    x: NDArray[np.float64], y: NDArray[np.float64], interpolation: str, periodic: bool
+) -> object:
+    """The piecewise cubic (a scipy ``PPoly``) through the points (x, y) [SI]."""
     from scipy.interpolate import CubicSpline, PchipInterpolator, PPoly, make_interp_spline
 
-    x, y = (np.asarray(v, dtype=float) for v in table.points())
-    periodic = table.period is not None
-    if table.interpolation == "linear":
-        pieces = PPoly.from_spline(make_interp_spline(x, y, k=1))
-    elif table.interpolation == "cubic":
-        pieces = CubicSpline(x, y, bc_type="periodic" if periodic else "not-a-knot")
-    elif not periodic:
-        pieces = PchipInterpolator(x, y)
-    else:  # two points of the neighbouring periods on each side set the end slopes
-        n, span = x.size - 1, x[-1] - x[0]
-        wrapped_x = np.concatenate([x[n - 2 : n] - span, x, x[1:3] + span])
-        pieces = PchipInterpolator(wrapped_x, np.concatenate([y[n - 2 : n], y, y[1:3]]))
-    columns = np.searchsorted(pieces.x, x[:-1], side="right") - 1  # the intervals of x
-    return x, _cubic(pieces.c[:, columns])
+    if interpolation == "linear":
+        return PPoly.from_spline(make_interp_spline(x, y, k=1))
+    if interpolation == "cubic":
+        return CubicSpline(x, y, bc_type="periodic" if periodic else "not-a-knot")
+    if not periodic:
+        return PchipInterpolator(x, y)
+    n, span = x.size - 1, x[-1] - x[0]  # two points of the neighbouring periods on each side
+    wrapped_x = np.concatenate([x[n - 2 : n] - span, x, x[1:3] + span])  # set the end slopes
+    return PchipInterpolator(wrapped_x, np.concatenate([y[n - 2 : n], y, y[1:3]]))
 
 
 def _cubic(c: NDArray[np.float64]) -> NDArray[np.float64]:

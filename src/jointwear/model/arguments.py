@@ -66,8 +66,15 @@ def argument_problems(
     drivers: Sequence, bodies: Sequence, joints: Sequence, forces: Sequence
 ) -> list[str]:
     """One line per function whose argument is unknown, not allowed there, or of other units."""
-    problems = []
-    for path, function, is_driver in _functions(drivers, forces):
+    functions = list(_functions(drivers, forces))
+    of_time = [path for path, function, _ in functions if function.argument == TIME]
+    problems = [
+        f"drivers[{i}].name: 'time' is the argument of functions of time ({of_time[0]}'s), so "
+        "this driver could not be one; rename it"
+        for i, driver in enumerate(drivers)
+        if driver.name == TIME and of_time
+    ]
+    for path, function, is_driver in functions:
         try:
             argument = resolve(function.argument, drivers, bodies, joints)
         except ValueError as error:

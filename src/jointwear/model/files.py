@@ -114,7 +114,8 @@ def _resolve(path: Path, chain: tuple[Path, ...]) -> dict:
         resolved = _resolve(base_path, (*chain, here))
     except ModelError as error:
         raise ModelError([f"{path}: extends {base!r}: {line}" for line in error.problems]) from None
-    resolved = apply_changes(resolved, [*removals, *_leaves(changes, ())])
+    leaves = [_file_beside(path.parent, key, value) for key, value in _leaves(changes, ())]
+    resolved = apply_changes(resolved, [*removals, *leaves])
     resolved["name"] = data.get("name", path.stem)
     if "description" in data:
         resolved["description"] = data["description"]
@@ -142,6 +143,13 @@ def _leaves(table: dict, prefix: tuple[str, ...]) -> list[tuple[str, object]]:
         else:
             out.append((".".join((*prefix, key)), value))
     return out
+
+
+def _file_beside(folder: Path, key: str, value: object) -> tuple[str, object]:
+    """A change of a table function's ``file``, named relative to ``folder``."""
+    if key.rpartition(".")[2] == "file" and isinstance(value, str):
+        return key, str(folder / Path(value).expanduser())
+    return key, value
 
 
 def _read_toml(path: Path) -> dict:

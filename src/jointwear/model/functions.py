@@ -127,6 +127,8 @@ class FunctionOfArgument(Table):
         given, kinds = {}, {}
         for key in cls.ARGUMENT_KEYS:
             value = data.get(key)
+            if getattr(value, "ndim", 0) > 0:  # an array, or an array Quantity: its items
+                value = list(value)
             items = value if isinstance(value, list | tuple) else [value]
             dimensions = [_dimension(key, i, item, value) for i, item in enumerate(items)]
             with_units = {d for d in dimensions if d is not None}
@@ -218,11 +220,20 @@ class TableFunction(FunctionOfArgument, Generic[_T]):
     @classmethod
     def _inline(cls, data: dict) -> dict:
         if data.get("file") is not None:
-            if "x" in data or "y" in data:
+            # A saved table holds the points of its source: a file given to it replaces them.
+            if data.get("source") is None and ("x" in data or "y" in data):
                 raise ValueError("give the points as x and y, or in a file, not both")
-            path = str(data.pop("file"))
-            x, x_unit, y, y_unit = read_columns(path, data.pop("columns", None))
-            data = {"x": x, "y": y, "x_unit": x_unit, "y_unit": y_unit, "source": path, **data}
+            path, columns = str(data.pop("file")), data.pop("columns", None)
+            if columns is not None and not (
+                isinstance(columns, list | tuple) and [type(c) for c in columns] == [str, str]
+            ):
+                raise ValueError(
+                    f"columns: got {columns!r}; give two header names (without units), of "
+                    "the x and the y column"
+                )
+            x, x_unit, y, y_unit = read_columns(path, columns)
+            x_unit, y_unit = x_unit or data.get("x_unit"), y_unit or data.get("y_unit")
+            data |= {"x": x, "y": y, "x_unit": x_unit, "y_unit": y_unit, "source": path}
         for key in ("x", "y"):
             unit = data.pop(f"{key}_unit", None)
             if unit is not None and isinstance(data.get(key), list | tuple):

@@ -9,8 +9,11 @@ import csv
 import re
 from pathlib import Path
 
+from ..units import unit_of
+
 MAX_ROWS = 100_000  # a table function's points: far more than a measured cycle has
 _HEADER = re.compile(r"\s*(.*?)\s*(?:\[\s*(.*?)\s*\])?\s*")
+_PARENTHESES = re.compile(r"(.*?)\s*\(\s*([^()]*?)\s*\)")  # "time (ms)": a unit?
 
 
 def resolve_files(data: object, folder: Path) -> object:
@@ -46,7 +49,7 @@ def read_columns(
         raise ValueError(f"{path}: needs a header row and at least two rows of numbers")
     if len(rows) > MAX_ROWS + 1:
         raise ValueError(f"{path}: has {len(rows) - 1} rows; at most {MAX_ROWS} are allowed")
-    names, units = zip(*(_HEADER.fullmatch(cell).groups() for cell in rows[0]), strict=True)
+    names, units = zip(*(_header_cell(path, cell) for cell in rows[0]), strict=True)
     picked = _pick(path, list(names), columns)
     values: list[list[float]] = [[], []]
     for number, row in enumerate(rows[1:], start=2):
@@ -59,6 +62,24 @@ def read_columns(
                     f"{path}, row {number}, column '{names[column]}': {cell!r} is not a number"
                 ) from None
     return values[0], units[picked[0]] or None, values[1], units[picked[1]] or None
+
+
+def _header_cell(path: str, cell: str) -> tuple[str, str | None]:
+    """A header cell's name and unit; ValueError for brackets that do not close around a unit."""
+    name, unit = _HEADER.fullmatch(cell).groups()
+    if "[" in name or "]" in name:
+        raise ValueError(
+            f"{path}: header cell {cell.strip()!r} does not read 'name [unit]'; give the unit "
+            "in one pair of brackets at the cell's end (none: SI numbers)"
+        )
+    in_parentheses = _PARENTHESES.fullmatch(name)
+    if unit is None and in_parentheses and unit_of(f"1 {in_parentheses.group(2)}"):
+        bracketed = f"{in_parentheses.group(1)} [{in_parentheses.group(2)}]"
+        raise ValueError(
+            f"{path}: header cell {cell.strip()!r}: give the unit in square brackets, "
+            f"{bracketed!r} (a cell without them is a column of SI numbers)"
+        )
+    return name, unit
 
 
 def _dialect(lines: list[str]) -> type[csv.Dialect]:
