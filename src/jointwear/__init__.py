@@ -11,42 +11,14 @@ from importlib import import_module
 from typing import TYPE_CHECKING
 
 from ._version import __version__
+from .model import __all__ as _model_names  # a light package: its names import lazily
 
 if TYPE_CHECKING:
     from .citations import citations_for, print_citations
     from .engine.run_file import run
     from .engine.simulate import simulate
     from .engine.user_laws import LawKey, register_law, unregister_law
-    from .model import (
-        AngleDriver,
-        AppliedTorque,
-        Body,
-        ConstantSpeed,
-        DistanceDriver,
-        Event,
-        Fourier,
-        Gravity,
-        Ground,
-        Harmonic,
-        JointForce,
-        JointPressure,
-        Model,
-        ModelError,
-        PinInSlotClearance,
-        PinInSlotJoint,
-        PointForce,
-        Polynomial,
-        RevoluteClearance,
-        RevoluteJoint,
-        RotationalSpringDamper,
-        Solver,
-        SpringDamper,
-        TableFunction,
-        TranslationalClearance,
-        TranslationalJoint,
-        load_model,
-        parse_model,
-    )
+    from .model import *  # noqa: F403 - for type checkers: the model and its tables
     from .results import Results, load_results
     from .studies.life.study import LifeResults, life
     from .studies.sweep.study import sweep
@@ -54,89 +26,33 @@ if TYPE_CHECKING:
 _PUBLIC = {  # public name -> the module that defines it
     "LawKey": ".engine.user_laws",
     "LifeResults": ".studies.life.study",
-    "Model": ".model",
-    "ModelError": ".model",
     "Results": ".results",
     "citations_for": ".citations",
     "life": ".studies.life.study",
-    "load_model": ".model",
     "load_results": ".results",
-    "parse_model": ".model",
     "print_citations": ".citations",
     "register_law": ".engine.user_laws",
     "run": ".engine.run_file",
     "simulate": ".engine.simulate",
     "sweep": ".studies.sweep.study",
     "unregister_law": ".engine.user_laws",
-    # the tables of a model file, to build a model in Python (docs/python-models.md)
-    "AngleDriver": ".model",
-    "AppliedTorque": ".model",
-    "Body": ".model",
-    "ConstantSpeed": ".model",
-    "DistanceDriver": ".model",
-    "Event": ".model",
-    "Fourier": ".model",
-    "Gravity": ".model",
-    "Ground": ".model",
-    "Harmonic": ".model",
-    "JointForce": ".model",
-    "JointPressure": ".model",
-    "PinInSlotClearance": ".model",
-    "PinInSlotJoint": ".model",
-    "PointForce": ".model",
-    "Polynomial": ".model",
-    "RevoluteClearance": ".model",
-    "RevoluteJoint": ".model",
-    "RotationalSpringDamper": ".model",
-    "Solver": ".model",
-    "SpringDamper": ".model",
-    "TableFunction": ".model",
-    "TranslationalClearance": ".model",
-    "TranslationalJoint": ".model",
-}
+} | dict.fromkeys(_model_names, ".model")  # the model and its tables (docs/python-models.md)
 
 __all__ = [
-    "AngleDriver",
-    "AppliedTorque",
-    "Body",
-    "ConstantSpeed",
-    "DistanceDriver",
-    "Event",
-    "Fourier",
-    "Gravity",
-    "Ground",
-    "Harmonic",
-    "JointForce",
-    "JointPressure",
     "LawKey",
     "LifeResults",
-    "Model",
-    "ModelError",
-    "PinInSlotClearance",
-    "PinInSlotJoint",
-    "PointForce",
-    "Polynomial",
     "Results",
-    "RevoluteClearance",
-    "RevoluteJoint",
-    "RotationalSpringDamper",
-    "Solver",
-    "SpringDamper",
-    "TableFunction",
-    "TranslationalClearance",
-    "TranslationalJoint",
     "__version__",
     "citations_for",
     "life",
-    "load_model",
     "load_results",
-    "parse_model",
     "print_citations",
     "register_law",
     "run",
     "simulate",
     "sweep",
     "unregister_law",
+    *_model_names,
 ]
 
 
