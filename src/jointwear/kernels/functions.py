@@ -23,7 +23,6 @@ state argument's own rates are not computed: only loads use them, and loads need
 
 import math
 
-import numpy as np
 from numba import njit
 
 from .codes import ArgumentKind, FunctionKind
@@ -61,11 +60,29 @@ def _spline(p, data, x):
         x = breaks[0] + (x - breaks[0]) - period * math.floor((x - breaks[0]) / period)
     elif not breaks[0] <= x <= breaks[n]:
         return math.nan, math.nan, math.nan
-    i = min(max(np.searchsorted(breaks, x, side="right") - 1, 0), n - 1)
+    i = _interval(breaks, x)
     c = data[first + n + 1 + 4 * i : first + n + 5 + 4 * i]
     d = x - breaks[i]
     f = ((c[0] * d + c[1]) * d + c[2]) * d + c[3]
     return f, (3.0 * c[0] * d + 2.0 * c[1]) * d + c[2], 6.0 * c[0] * d + 2.0 * c[1]
+
+
+@njit(cache=True, no_cpython_wrapper=True)
+def _interval(breaks, x):
+    """The interval i, 0 <= i < n, with breaks[i] <= x < breaks[i + 1] (the last one closed).
+
+    A bisection written out: numpy's searchsorted would make every process that loads the
+    cached loop import numba's array-math module, and with it scipy's BLAS (0.2 s).
+    """
+    low = 0
+    high = breaks.shape[0] - 1
+    while high - low > 1:
+        middle = (low + high) // 2
+        if breaks[middle] <= x:
+            low = middle
+        else:
+            high = middle
+    return low
 
 
 @njit(cache=True, no_cpython_wrapper=True)
