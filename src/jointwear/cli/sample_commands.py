@@ -85,6 +85,15 @@ def sample(
     cycles: Annotated[
         int | None, typer.Option("--cycles", help="Long-life wear runs of N cycles per case.")
     ] = None,
+    max_change: Annotated[
+        str | None,
+        typer.Option(
+            "--max-change",
+            help="With --cycles: the life runs' largest change per update ('1%', '1 um') "
+            "[default: life's].",
+            show_default=False,
+        ),
+    ] = None,
     scheduler: Annotated[
         str | None, typer.Option("--scheduler", help="Dask scheduler address (tcp://host:8786).")
     ] = None,
@@ -116,7 +125,8 @@ def sample(
             model, out_dir, distributions=plan.distributions, n=count,
             method=method or plan.method or DEFAULT_METHOD,
             seed=_first(seed, plan.seed, DEFAULT_SEED), correlations=plan.correlations,
-            overrides=plan.overrides, cycles=cycles, scheduler=scheduler, workers=workers,
+            overrides=plan.overrides, cycles=cycles, max_change=max_change, scheduler=scheduler,
+            workers=workers,
             figures=figures, progress=bar,
         )  # fmt: skip
     except ModelError as error:

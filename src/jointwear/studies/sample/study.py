@@ -34,6 +34,7 @@ from ...engine.interrupts import stop_requests
 from ...engine.status import SUCCESS
 from ...io import write_atomic
 from ...model import Model, ModelError
+from ..life.settings import LifeSettings
 from ..sweep.cases import MAX_CASES, indexed_cases
 from ..sweep.engine import FIXED_COLUMNS, StudyProgress, check_run_options, run_study
 from .design import METHODS, correlation_matrix, unit_points
@@ -80,6 +81,7 @@ def sample(
     correlations: Mapping[tuple[str, str], float] | None = None,
     overrides: Sequence[str] = (),
     cycles: int | None = None,
+    max_change: str | float | None = None,
     confidence: float = CONFIDENCE,
     scheduler: str | None = None,
     workers: int | None = None,
@@ -111,7 +113,10 @@ def sample(
     overrides
         ``dotted.path=value`` settings common to every case.
     cycles
-        None: each case is a run; a number: a long-life wear run of that many cycles.
+        None: each case is a run; a number: a long-life wear run of that many cycles,
+        without its own band (the study's spread is the uncertainty) or figures.
+    max_change
+        The life runs' ``max_change`` (None: ``jointwear.life``'s default).
     confidence
         Of the statistics' and indices' intervals [-].
     scheduler, workers, figures, progress
@@ -130,7 +135,9 @@ def sample(
     inputs = _distributions(distributions)
     paths = [d.path for d in inputs]
     _check(inputs, n, method, seed, correlations, overrides, confidence)
-    problems = check_run_options(cycles, scheduler, workers)
+    problems = check_run_options(cycles, scheduler, workers) + _max_change_problems(
+        max_change, cycles
+    )
     if problems:
         raise ModelError(problems)
     matrix = correlation_matrix(paths, dict(correlations or {}))
@@ -150,6 +157,7 @@ def sample(
         model_path, out, cases, kind="sample", record=record, overrides=overrides,
         cycles=cycles, scheduler=scheduler, workers=workers, progress=progress,
         also_writes=("statistics.csv", "sensitivity.csv", f"{FIGURES}/"),
+        life_options=_life_options(max_change),
     )  # fmt: skip
     table = done.table
     table.insert(1 + len(paths), BASE, base)
@@ -158,6 +166,26 @@ def sample(
         drawn = draw(done.folder, table, paths, stats, sensitivity) if figures else []
     return SampleResults(done.folder, table, stats, sensitivity, done.skipped, drawn,
                          done.interrupted)  # fmt: skip
+
+
+def _max_change_problems(max_change: str | float | None, cycles: int | None) -> list[str]:
+    if max_change is None:
+        return []
+    if cycles is None:
+        return ["--max-change: only for life runs; give --cycles too"]
+    try:
+        LifeSettings(cycles, max_change=max_change).change_bound(0.0)
+    except ValueError as error:
+        return [f"--max-change: {error}"]
+    return []
+
+
+def _life_options(max_change: str | float | None) -> dict[str, object]:
+    """The life runs of a study's cases: no band of their own, no figures."""
+    options: dict[str, object] = {"band": (), "figures": False}
+    if max_change is not None:
+        options["max_change"] = max_change
+    return options
 
 
 def _distributions(given: Mapping[str, object]) -> list[Distribution]:

@@ -95,6 +95,7 @@ def run_study(
     workers: int | None = None,
     progress: StudyProgress | None = None,
     also_writes: Sequence[str] = (),
+    life_options: Mapping[str, object] | None = None,
 ) -> StudyRun:
     """Run ``cases`` of a model into the study folder ``out`` (module docstring).
 
@@ -111,6 +112,8 @@ def run_study(
         What ``<kind>.json`` says of the study, besides the model, settings and case names.
     also_writes
         Further files and folders (``figures/``) the study writes into ``out``.
+    life_options
+        Keyword arguments of ``jointwear.life`` for every case (with ``cycles``).
 
     Raises
     ------
@@ -128,7 +131,8 @@ def run_study(
         make_folder(folder)
         write_text(folder / SAVED_MODEL, model_path.model_dump_json(indent=2))
         model_path = folder
-    tasks = [_task(model_path, folder, overrides, cycles, c, models[c.id]) for c in cases]
+    options = dict(life_options or {})
+    tasks = [_task(model_path, folder, overrides, cycles, options, c, models[c.id]) for c in cases]
     plan = {
         "model": str(Path(model_path).resolve()),
         **record,
@@ -189,6 +193,7 @@ def _task(
     folder: Path,
     overrides: Sequence[str],
     cycles: int | None,
+    life_options: dict,
     case: Case,
     model: Model,
 ) -> CaseTask:
@@ -197,6 +202,7 @@ def _task(
         "case": case.id,
         "kind": "run" if cycles is None else "life",
         "cycles": cycles,
+        "life_options": json.loads(json.dumps(life_options, default=str)),
         "overrides": list(every),
         "model": json.loads(model.model_dump_json()),
     }
@@ -208,6 +214,7 @@ def _task(
         cycles=cycles,
         record=record,
         laws=used_laws(model),
+        life_options=life_options if cycles is not None else {},
     )
 
 
@@ -216,7 +223,7 @@ def _finished(folder: Path, record: dict) -> bool:
     done = read_record(folder)
     if done is None or done.get("status") != SUCCESS:
         return False
-    if any(done.get(key) != record[key] for key in ("kind", "cycles", "model")):
+    if any(done.get(key, {}) != record[key] for key in ("kind", "cycles", "model", "life_options")):
         return False
     try:
         return json.loads((folder / "summary.json").read_text()).get("status") == SUCCESS

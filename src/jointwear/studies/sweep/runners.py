@@ -20,7 +20,7 @@ from collections.abc import Iterator, Sequence
 from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
 from concurrent.futures.process import BrokenProcessPool
 from contextlib import suppress
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from importlib import import_module
 from pathlib import Path
 
@@ -73,6 +73,7 @@ class CaseTask:
     cycles: int | None
     record: dict
     laws: tuple = ()
+    life_options: dict = field(default_factory=dict)
 
 
 Outcome = dict  # status, error, wall_s [s], summary (the run's summary.json, or {})
@@ -127,7 +128,10 @@ def _simulate(task: CaseTask) -> dict:
         return results.summary
     from ..life.study import life  # long-life wear runs; imported only when asked for
 
-    return life(task.model_path, task.folder, cycles=task.cycles, overrides=task.overrides).summary
+    return life(
+        task.model_path, task.folder, cycles=task.cycles, overrides=task.overrides,
+        **task.life_options,
+    ).summary  # fmt: skip
 
 
 def read_record(folder: Path) -> dict | None:
