@@ -245,7 +245,7 @@ def _whole(value: object) -> bool:
 
 
 def outputs(table: pd.DataFrame, inputs: Sequence[str]) -> list[str]:
-    """The table's result columns: per joint and driver, numeric, not diagnostics."""
+    """The table's result columns: per joint and driver, numeric, not diagnostics, given."""
     return [
         column
         for column in table.columns
@@ -254,6 +254,7 @@ def outputs(table: pd.DataFrame, inputs: Sequence[str]) -> list[str]:
         and column not in FIXED_COLUMNS
         and not NOT_OUTPUTS.fullmatch(column)
         and pd.api.types.is_numeric_dtype(table[column])
+        and np.isfinite(table[column].to_numpy(dtype=float)).any()  # None in every summary
     ]
 
 
