@@ -1,7 +1,7 @@
 """Figures of a sampled study: how the results spread, what drives them, whether n was enough.
 
-Drawn for the key outputs (the forces, wear, drive torque and life a design is judged by,
-``KEY_OUTPUTS``) that vary between cases:
+Drawn for the key outputs (the forces, the deeper wear of each joint, the drive torque and
+the life a design is judged by, ``KEY_OUTPUTS``) that vary between cases:
 
 - ``distributions.png``: a histogram of each output, its empirical distribution function
   over it, and P5, P50 and P95 marked with their confidence intervals shaded;
@@ -32,25 +32,40 @@ from ..units import unit_of
 from .files import save_png
 from .sweep import quantity
 
+WEAR_DEPTH = r"max_wear_depth_[a-z_]+_m"
 KEY_OUTPUTS = (  # column keys (regular expressions) of the outputs drawn, in this order
     r"max_contact_force_n",
-    r"max_wear_depth_[a-z_]+_m",
+    WEAR_DEPTH,
     r"clearance_growth_m",
     r"hours_to_clearance_growth_50pct",
     r"cycles_to_clearance_growth_50pct",
     r"torque_range_n_m",
     r"force_range_n",
 )
-MAX_OUTPUTS = 8  # key outputs drawn at most (the statistics cover all)
+MAX_OUTPUTS = 12  # key outputs drawn at most (the statistics cover all)
 MAX_INPUTS = 8  # inputs in the scatter figure at most (the most influential)
 PANEL = (3.6, 2.7)  # [in] one panel
+TABLE_WORDS = {"joints", "clearance", "bodies", "drivers", "forces", "function"}  # in labels
 MARKS = {"p5": ("P5", "tab:blue"), "p50": ("P50", "black"), "p95": ("P95", "tab:red")}
 
 
 def key_outputs(stats: pd.DataFrame) -> list[str]:
-    """The outputs drawn: those of ``KEY_OUTPUTS`` with a spread, in its order."""
-    spread = stats[(stats["std"] > 0) & (stats["n"] > 1)]["output"].tolist()
-    chosen = [c for key in KEY_OUTPUTS for c in spread if re.fullmatch(key, c.partition(".")[2])]
+    """The outputs drawn: those of ``KEY_OUTPUTS`` with a spread, in its order.
+
+    Of a joint's wear depths (bearing and journal), the deeper on average only.
+    """
+    spread = stats[(stats["std"] > 0) & (stats["n"] > 1)].set_index("output")["mean"]
+    chosen = []
+    for key in KEY_OUTPUTS:
+        found = [c for c in spread.index if re.fullmatch(key, c.partition(".")[2])]
+        if key == WEAR_DEPTH:
+            deepest = {}
+            for column in found:
+                joint = column.partition(".")[0]
+                if joint not in deepest or spread[column] > spread[deepest[joint]]:
+                    deepest[joint] = column
+            found = list(deepest.values())
+        chosen += found
     return chosen[:MAX_OUTPUTS]
 
 
@@ -203,34 +218,54 @@ def plot_scatter(
 
 
 def _labels(inputs: Sequence[str]) -> dict[str, str]:
-    """The shortest trailing part of each input's path that tells it from the others."""
-    return short_keys(list(inputs))
+    """Each input's path without the words every such path has (``joints``, ``clearance``).
+
+    ``joints.crank_coupler.clearance.journal_radius`` -> "crank_coupler journal_radius";
+    the shortest distinct trailing parts where that would confuse two inputs.
+    """
+    labels = {path: " ".join(p for p in path.split(".") if p not in TABLE_WORDS) or path
+              for path in inputs}  # fmt: skip
+    if len(set(labels.values())) < len(labels):
+        return short_keys(list(inputs))
+    return labels
 
 
 def plot_sensitivity(sensitivity: pd.DataFrame, outputs: Sequence[str]) -> Figure:
-    """Per output, a bar per input: Sobol' S1 and ST, or Spearman's rho, with intervals."""
+    """Per output, a bar per input: Sobol' S1 and ST, or Spearman's rho, with intervals.
+
+    The ``MAX_INPUTS`` strongest inputs of each output, the strongest on top.
+    """
     shown = [o for o in outputs if o in set(sensitivity["output"])]
-    figure, axes = _grid(len(shown), columns=2)
     sobol = "ST" in sensitivity
-    short = _labels(sorted(set(sensitivity["input"])))
-    for ax, column in zip(axes, shown, strict=True):
+    height = 0.3 * min(MAX_INPUTS, sensitivity["input"].nunique()) + 1.0
+    down = math.ceil(len(shown) / 2)
+    across = min(len(shown), 2)
+    figure = Figure(figsize=(5.2 * across, height * down + 0.5), layout="constrained")
+    axes = list(figure.subplots(down, across, squeeze=False).ravel())
+    for ax in axes[len(shown) :]:
+        ax.set_visible(False)
+    names = _labels(sorted(set(sensitivity["input"])))
+    measure = "ST" if sobol else "rho"
+    for number, (ax, column) in enumerate(zip(axes, shown, strict=False)):
         rows = sensitivity[sensitivity["output"] == column]
-        rows = rows.sort_values("ST" if sobol else "rho", key=abs if not sobol else None)
-        labels = [short[path] for path in rows["input"]]
+        rows = rows.reindex(rows[measure].abs().sort_values().index)[-MAX_INPUTS:]
         place = np.arange(len(rows))
-        keys = (("S1", "first order", -0.2), ("ST", "total", 0.2)) if sobol else (
+        keys = (("S1", "first order S1", -0.2), ("ST", "total ST", 0.2)) if sobol else (
             ("rho", "Spearman's ρ", 0.0),)  # fmt: skip
         for key, name, shift in keys:
-            low = rows[key] - rows[f"{key}_low"]
-            high = rows[f"{key}_high"] - rows[key]
+            low = (rows[key] - rows[f"{key}_low"]).clip(lower=0)
+            high = (rows[f"{key}_high"] - rows[key]).clip(lower=0)
             ax.barh(place + shift, rows[key], height=0.4 if sobol else 0.6, label=name,
-                    xerr=[low.clip(lower=0), high.clip(lower=0)], capsize=2)  # fmt: skip
-        ax.set_yticks(place, labels, fontsize=7)
+                    xerr=[low, high], capsize=2, error_kw={"linewidth": 0.8})  # fmt: skip
+        ax.set_yticks(place, [names[path] for path in rows["input"]], fontsize=7)
         ax.axvline(0, color="0.5", linewidth=0.8)
-        ax.set_xlabel("Sobol' index" if sobol else "rank correlation")
-        label = quantity(column)[0]
-        ax.set_title(f"{column.partition('.')[0]}: {label}", fontsize=9, loc="left")
-        ax.legend(fontsize=7)
-    figure.suptitle("sensitivity of each output to each input (bars: 95 % intervals)",
+        ax.set_xlim(-0.05 if sobol else -1.0, 1.05 if sobol else 1.0)
+        ax.set_xlabel("Sobol' index" if sobol else "Spearman's rank correlation ρ", fontsize=8)
+        ax.set_title(f"{column.partition('.')[0]}: {quantity(column)[0]}", fontsize=9, loc="left")
+        if sobol and number == 0:
+            ax.legend(fontsize=7, loc="lower right")
+    more = sensitivity["input"].nunique() > MAX_INPUTS
+    shown_inputs = f" (the {MAX_INPUTS} strongest inputs of each)" if more else ""
+    figure.suptitle(f"sensitivity of each output{shown_inputs}; bars: 95 % intervals",
                     fontsize=10)  # fmt: skip
     return figure
