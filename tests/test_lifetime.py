@@ -491,6 +491,10 @@ def test_cli_life_writes_the_folder(tmp_path):
     summary = json.loads((tmp_path / "summary.json").read_text())
     table = pd.read_csv(tmp_path / "life.csv")
     assert summary["updates"] == table["update"].iloc[-1] and summary["cycles_reached"] == 12
+    # Hours of operation: crank turns of 40 ms.
+    np.testing.assert_allclose(table["hours"], table["cycles"] * PERIOD / 3600, rtol=1e-12)
+    assert summary["hours_reached"] == pytest.approx(12 * PERIOD / 3600, rel=1e-12)
+    assert f"{12 * PERIOD / 3600:.3g} hours of operation" in result.output
     profiles = pd.read_csv(tmp_path / "profiles.csv")
     assert len(profiles) == len(table) * 2 * 36
     again = invoke("life", FOURBAR, "--cycles", 12, "--out", tmp_path, "--set", FAST_WEAR[0],
