@@ -19,11 +19,12 @@ from types import SimpleNamespace
 
 import numpy as np
 import pandas as pd
+import pytest
 from typer.testing import CliRunner
 
 from jointwear.cli import app
 from jointwear.engine.simulate import simulate
-from jointwear.model import load_model
+from jointwear.model import ModelError, load_model
 from jointwear.studies.life import update as lifetime_update
 from jointwear.studies.life.runaway import Watch, jump
 from jointwear.studies.life.study import life
@@ -190,3 +191,15 @@ def test_a_blow_up_stops_the_run_before_it_is_extrapolated(tmp_path, monkeypatch
     assert res.summary["runaway"]["reference"] == level
     assert res.summary["runaway"]["ratio"] > 10.0
     assert len(calls) == first  # nothing simulated past the blow-up
+
+
+def test_bad_run_away_and_process_settings_are_model_errors(tmp_path):
+    for factor in (1.0, 0.5, -1, float("inf"), "10", True):
+        with pytest.raises(ModelError, match=r"^runaway_factor: .* is not a finite number above"):
+            life(FOURBAR, tmp_path, cycles=3, runaway_factor=factor)
+    for workers in (0, 1.5):
+        with pytest.raises(ModelError, match=r"^workers: got .*; expected a whole number"):
+            life(FOURBAR, tmp_path, cycles=3, workers=workers)
+    with pytest.raises(ModelError, match=r"^workers: only for local processes"):
+        life(FOURBAR, tmp_path, cycles=3, workers=2, scheduler="tcp://127.0.0.1:8786")
+    assert not (tmp_path / "life.csv").exists()  # refused before any work

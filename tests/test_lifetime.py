@@ -363,8 +363,9 @@ def test_a_stop_asked_as_the_last_update_ends_does_not_undo_success(tmp_path):
         ("checkpoint/checkpoint.json", b'{"update": 1}'),
         ("checkpoint/state_000001.npz", b"PK\x03\x04 cut short"),
         ("life.csv", b""),
+        ("life.csv", b"update,cycles,simulated_cycles\n0,2,2\n"),
     ],
-    ids=["not-a-record", "keys-missing", "state-cut-short", "table-emptied"],
+    ids=["not-a-record", "keys-missing", "state-cut-short", "table-emptied", "older-columns"],
 )
 def test_a_damaged_run_is_a_one_line_error_on_resume(tmp_path, file, damage):
     life(FOURBAR, tmp_path, cycles=4, overrides=FAST_WEAR, figures=False)

@@ -25,7 +25,7 @@ from typing import NamedTuple
 
 import pandas as pd
 
-from ...engine.status import ERROR, INTERRUPTED, RUNAWAY
+from ...engine.status import ERROR, INTERRUPTED
 from ...model import Model, ModelError
 from ...model.laws.user import used_laws
 from ..sweep.runners import CaseTask, Outcome, run_dask, run_local
@@ -45,7 +45,7 @@ class Companion(NamedTuple):
 
 def companion(summary: dict, table: pd.DataFrame) -> Companion:
     """A companion run from its summary.json and life.csv."""
-    runaway = summary.get("runaway") if summary.get("status") == RUNAWAY else None
+    runaway = summary.get("runaway")  # there when it ran away
     return Companion(
         summary["status"], table, summary["cycles_reached"], summary["wall_s"],
         None if runaway is None else runaway["cycle"],
