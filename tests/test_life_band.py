@@ -59,8 +59,9 @@ def test_the_band_holds_the_direct_simulation(tmp_path):
     hours = band["hours_to_clearance_growth_50pct"]
     assert hours == {k: pytest.approx(v / HOUR, rel=1e-12) for k, v in half.items()}
     assert joint["hours_to_clearance_growth_50pct"] == pytest.approx(half["value"] / HOUR)
-    # Not a run-away: the paper's four-bar wears steadily (its force and wear per turn change
-    # by some 25 % at most between updates, well within the factor 10).
+    # Not a run-away: from one update to the next the joint's peak force and wear per turn
+    # stay within 2.3 times the median of the three updates before (measured on these runs'
+    # life.csv), well within the factor 10.
     assert "runaway" not in res.summary and not res.summary["band"]["ran_away"]
     assert res.summary["cycles_reached"] == direct.summary["cycles_reached"] == CYCLES
     # How the band was made, and where its runs are.
