@@ -156,11 +156,11 @@ class Band:
 
         def tick() -> None:
             done = self.cycles_done()
-            if progress is not None and done != shown[0]:
+            if done != shown[0]:
                 shown[0] = done
                 progress(done)
 
-        self.on_tick = tick
+        self.on_tick = None if progress is None else tick
         outcomes = {task.record["band"]: outcome for task, outcome in self.runs}
         self.runs = None
         problems = [
@@ -172,7 +172,7 @@ class Band:
             raise ModelError(problems)
         found = {}
         for bound, where in self.places.items():
-            outcome = outcomes.get(bound, {"status": INTERRUPTED, "wall_s": 0.0, "summary": {}})
+            outcome = outcomes.get(bound, {"status": INTERRUPTED, "summary": {}})
             if outcome["summary"]:
                 found[bound] = companion(outcome["summary"], files.read_tables(where)[0])
             else:  # stopped before its run started
