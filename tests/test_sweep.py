@@ -378,22 +378,35 @@ def test_vary_values_split_at_top_level_commas_only():
 
 
 def test_case_names_are_short_unique_and_safe():
+    short = make_cases({"joints.a.clearance.friction_coefficient": ["0.1", '"8e-14 1/Pa"']})
+    assert [c.id for c in short] == ["friction_coefficient=0.1", "friction_coefficient=8e-14_1_Pa"]
+    # names by values longer than MAX_NAME_LENGTH: every case by its index
     cases = make_cases(
         {
             "joints.a.clearance.friction_coefficient": ["0.1"],
             "joints.b.clearance.friction_coefficient": ["0.2", '"8e-14 1/Pa"'],
         }
     )
-    assert [c.id for c in cases] == [
-        "a.clearance.friction_coefficient=0.1__b.clearance.friction_coefficient=0.2",
-        "a.clearance.friction_coefficient=0.1__b.clearance.friction_coefficient=8e-14_1_Pa",
+    assert [c.id for c in cases] == ["case001", "case002"]
+    assert [c.values["joints.b.clearance.friction_coefficient"] for c in cases] == [
+        "0.2",
+        '"8e-14 1/Pa"',
     ]
     long = make_cases({"x": ["1" * 200, "1" * 199 + "2"]})
-    assert len({c.id for c in long}) == 2
-    assert all(len(c.id) <= 120 for c in long)
-    clash = make_cases({"x": ["abm", "ABM", "a/b", "a b"]})
-    assert len({c.id.lower() for c in clash}) == 4
-    assert all(c.id.replace("=", "").replace("-", "").replace("_", "").isalnum() for c in clash)
+    assert [c.id for c in long] == ["case001", "case002"]
+    clash = make_cases({"x": ["abm", "ABM", "a/b", "a b"]})  # alike but for letter case
+    assert [c.id for c in clash] == ["case001", "case002", "case003", "case004"]
+    apart = make_cases({"x": ["abm", "a/b"]})
+    assert [c.id for c in apart] == ["x=abm", "x=a_b"]
+
+
+def test_many_linked_paths_without_vary_give_indexed_cases():
+    link = {f"joints.j{i}.clearance.friction_coefficient": [str(0.01 * k) for k in range(1, 51)]
+            for i in range(6)}  # fmt: skip
+    cases = make_cases({}, link)
+    assert len(cases) == 50
+    assert cases[0].id == "case001" and cases[-1].id == "case050"
+    assert all(c.values[path] == link[path][i] for i, c in enumerate(cases) for path in link)
 
 
 def test_varied_values_in_the_table_are_the_model_si_values():

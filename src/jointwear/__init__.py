@@ -21,6 +21,7 @@ if TYPE_CHECKING:
     from .model import *  # noqa: F403 - for type checkers: the model and its tables
     from .results import Results, load_results
     from .studies.life.study import LifeResults, life
+    from .studies.sample.study import SampleResults, sample
     from .studies.sweep.study import sweep
 
 _PUBLIC = {  # public name -> the module that defines it
@@ -33,6 +34,8 @@ _PUBLIC = {  # public name -> the module that defines it
     "print_citations": ".citations",
     "register_law": ".engine.user_laws",
     "run": ".engine.run_file",
+    "sample": ".studies.sample.study",
+    "SampleResults": ".studies.sample.study",
     "simulate": ".engine.simulate",
     "sweep": ".studies.sweep.study",
     "unregister_law": ".engine.user_laws",
@@ -49,6 +52,8 @@ __all__ = [
     "print_citations",
     "register_law",
     "run",
+    "sample",
+    "SampleResults",
     "simulate",
     "sweep",
     "unregister_law",

@@ -18,17 +18,18 @@ from .._version import __version__
 from .citation_commands import citations
 from .export_commands import export
 from .run_commands import check, plot, run
+from .sample_commands import sample
 from .study_commands import life, sweep
 
 HELP = (
     "Simulate planar mechanisms whose joints have clearance: the contact, friction and "
     "lubricant forces in the joints, and how their surfaces wear (after Flores 2009).\n\n"
-    "Run a TOML model file, check it, sweep its parameters or predict its wear over millions "
-    "of cycles. 'jointwear COMMAND --help' describes a command."
+    "Run a TOML model file, check it, sweep its parameters, sample its tolerances or predict "
+    "its wear over millions of cycles. 'jointwear COMMAND --help' describes a command."
 )
 
 app = typer.Typer(no_args_is_help=True, help=HELP, rich_markup_mode=None)
-for function in (run, check, plot, sweep, life, citations, export):
+for function in (run, check, plot, sweep, sample, life, citations, export):
     app.command()(function)
 
 

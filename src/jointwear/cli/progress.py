@@ -12,7 +12,7 @@ from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn, Ti
 from .common import PLAIN, err
 
 if TYPE_CHECKING:
-    from ..studies.sweep.study import CaseReport
+    from ..studies.sweep.engine import CaseReport
 
 
 def progress_bar(label: str, count: str) -> Progress:
@@ -109,9 +109,10 @@ class CompileNotice:
 class SweepProgress:
     """Cases done: a progress bar on a terminal, else a line per case on stderr."""
 
-    def __init__(self) -> None:
+    def __init__(self, label: str = "sweep") -> None:
         self.bar: Progress | None = None
         self.task = 0
+        self.label = label  # the study's kind, the bar's name
 
     def __call__(self, report: CaseReport | None, done: int, total: int) -> None:
         """Show a case's report (None: the runs start) and ``done`` of ``total`` cases."""
@@ -126,9 +127,9 @@ class SweepProgress:
         if self.bar is None and runs_started and err.is_terminal:
             # only once the local processes have started: they may be forked, and the bar
             # runs a thread
-            self.bar = progress_bar("sweep", "{task.completed}/{task.total} cases")
+            self.bar = progress_bar(self.label, "{task.completed}/{task.total} cases")
             self.bar.start()
-            self.task = self.bar.add_task("sweep", total=total)
+            self.task = self.bar.add_task(self.label, total=total)
         console = err if self.bar is None else self.bar.console
         if line is not None:
             console.print(line, **PLAIN)

@@ -277,11 +277,13 @@ def _filled(table: Table, rows: list[tuple]) -> Table:
     return keep_whole(table, 1)
 
 
-STUDY_FOLDERS = {"life.csv": "life-run", "sweep.json": "sweep"}  # what marks them
+STUDY_FOLDERS = {"life.csv": "life-run", "sweep.json": "sweep", "sample.json": "sampled study"}
 
 
 def plot(
-    folder: Annotated[Path, typer.Argument(help="Results folder of a run, a life run or a sweep.")],
+    folder: Annotated[
+        Path, typer.Argument(help="Results folder of a run, a life run, a sweep or a sample.")
+    ],
     animation: Animation = False,
 ) -> None:
     """Draw (again) the figures of a results folder into FOLDER/figures."""
@@ -299,12 +301,14 @@ def plot(
 
 
 def _redraw_study(folder: Path, kind: str) -> None:
-    """Draw the figures of a life-run or sweep folder again (``plot``)."""
+    """Draw the figures of a life-run, sweep or sample folder again (``plot``)."""
     from ..model import ModelError
     from ..studies.life.redraw import redraw_life_figures
+    from ..studies.sample.study import redraw_sample_figures
     from ..studies.sweep.study import redraw_sweep_figures
 
-    redraw = redraw_life_figures if kind == "life-run" else redraw_sweep_figures
+    redraw = {"life-run": redraw_life_figures, "sweep": redraw_sweep_figures,
+              "sampled study": redraw_sample_figures}[kind]  # fmt: skip
     try:
         figures = redraw(folder)
     except ModelError as error:

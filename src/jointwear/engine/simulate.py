@@ -34,7 +34,7 @@ from .prepare import prepare
 from .provenance import provenance
 from .state_tables import left_tables
 from .status import status_message
-from .summary import clearance_summary, clearance_tables, run_stats, summary
+from .summary import clearance_summary, clearance_tables, driver_summary, run_stats, summary
 from .user_laws import user_tables
 
 # A run that reaches its lock-up time, or fails past this share of it, ends ``lock_up``.
@@ -202,10 +202,12 @@ def simulate(
         taken = int(log.counters[Counter.SNAPSHOTS])
         tables = clearance_tables(model, contacts, ctl.snapshot_times, taken, done.impacts, windows)
         report |= clearance_summary(model, contacts, windows, settle, (t0, t_reached))
+    timeseries = with_derived_columns(model, pd.DataFrame(data, columns=columns))
+    report["drivers"] = driver_summary(model, timeseries, report.get("steady_state"))
     report["provenance"] = origin
     return Results(
         model=model,
-        timeseries=with_derived_columns(model, pd.DataFrame(data, columns=columns)),
+        timeseries=timeseries,
         events=pd.DataFrame(done.events, columns=["time", "event", "direction"]),
         summary=report,
         final=final,

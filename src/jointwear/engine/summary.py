@@ -13,6 +13,8 @@ from ..results.cycles import CycleWindows, Settling, lead_with_steady_state
 from .contacts import Contacts
 from .status import status_message
 
+DRIVER_EFFORTS = {"torque": "n_m", "force": "n"}  # time-series <kind>_<driver>: summary suffix
+
 
 def run_stats(log: object, wall: float, t_reached: float, assembly: object, dof: int) -> dict:
     """The run's counts: wall time [s], steps, evaluations, constraint violation, ..."""
@@ -90,3 +92,26 @@ def clearance_summary(
         "steady_state": settle.summary(t0, t_reached, steady[2] if steady else 0),
         "clearance_joints": lead_with_steady_state(whole, settled),
     }
+
+
+def driver_summary(model: Model, timeseries: pd.DataFrame, steady_state: dict | None) -> dict:
+    """Per driver, the torque [N m] (or force [N]) it applies: largest, smallest and range.
+
+    Over the steady state where the run reached it (``steady_state``'s ``from_s``), else over
+    the whole run; what sizes the drive (a motor's rating, a gearbox's torque range).
+    """
+    from_s = (steady_state or {}).get("from_s")
+    rows = timeseries if from_s is None else timeseries[timeseries["time"] >= from_s]
+    drivers = {}
+    for driver in model.drivers:
+        for kind, suffix in DRIVER_EFFORTS.items():
+            column = f"{kind}_{driver.name}"
+            if column not in rows or not len(rows):
+                continue
+            values = rows[column].to_numpy()
+            drivers[driver.name] = {
+                f"max_{kind}_{suffix}": float(np.max(values)),
+                f"min_{kind}_{suffix}": float(np.min(values)),
+                f"{kind}_range_{suffix}": float(np.ptp(values)),
+            }
+    return drivers

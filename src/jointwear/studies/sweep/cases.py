@@ -7,12 +7,13 @@ Cartesian product of the lists, the first path varying slowest; linked paths (``
 sweep file's ``[link]``) step through their lists together, as one more axis of the product
 (a crank speed with the load frequency it drives). Each case is named by its
 varied values (``friction_coefficient=0.05__bearing_radius=10.1_mm``), a name that is stable
-from one run of the same sweep to the next and safe as a folder name.
+from one run of the same sweep to the next and safe as a folder name; where such names would
+be long (many varied paths, long values) or alike but for letter case, every case is named by
+its index instead (``case007``), its values in the study's table.
 """
 
 from __future__ import annotations
 
-import hashlib
 import itertools
 import json
 import math
@@ -34,7 +35,7 @@ from ...model.overrides import toml_value
 VARY_EXAMPLE = "joints.coupler_follower.clearance.friction_coefficient=0.05,0.1"
 SWEEP_FILE_KEYS = ("vary", "link", "set")
 MAX_CASES = 10_000  # cases in one sweep: beyond this, a mistyped --vary rather than a plan
-MAX_ID_LENGTH = 120  # characters of a case name (a folder name) before it is shortened
+MAX_NAME_LENGTH = 64  # characters of a case name by values; longer: every case by its index
 _UNSAFE = re.compile(r"[^A-Za-z0-9.+-]+")  # characters a case name does not keep
 
 
@@ -86,7 +87,7 @@ def parse_vary(options: Iterable[str], name: str = "--vary") -> dict[str, list[s
     for option in options:
         path, equals, text = option.partition("=")
         path = path.strip()
-        values = [value.strip() for value in _split_values(text)]
+        values = [value.strip() for value in split_values(text)]
         if not equals or not path or not all(path.split(".")) or not all(values):
             problems.append(f"{name} {option}: expected PATH=V1,V2,..., e.g. {VARY_EXAMPLE}")
         elif path in vary:
@@ -98,7 +99,7 @@ def parse_vary(options: Iterable[str], name: str = "--vary") -> dict[str, list[s
     return vary
 
 
-def _split_values(text: str) -> list[str]:
+def split_values(text: str) -> list[str]:
     """Split at commas that are not inside brackets, braces or quotes."""
     values, start, depth, quote = [], 0, 0, ""
     for i, char in enumerate(text):
@@ -206,19 +207,7 @@ def read_sweep_file(path: str | os.PathLike) -> Plan:
         If the file cannot be read or is not of this form.
     """
     path = Path(path)
-    try:
-        text = path.read_bytes().decode()
-        if too_deep(text):
-            raise ModelError([f"{path}: {TOO_DEEP}"])
-        data = tomllib.loads(text)
-    except OSError as error:
-        raise ModelError([f"{path}: cannot read the sweep file; {error.strerror}"]) from None
-    except (UnicodeDecodeError, tomllib.TOMLDecodeError) as error:
-        raise ModelError([f"{path}: not a TOML sweep file; {error}"]) from None
-    except RecursionError:
-        raise ModelError([f"{path}: {TOO_DEEP}"]) from None
-    except ValueError:  # a number of thousands of digits
-        raise ModelError([f"{path}: {TOO_LONG}"]) from None
+    data = read_toml_file(path, "sweep file")
     problems = [
         f"{path}: unknown key {key!r}; a sweep file has the tables vary, link and set"
         f"{did_you_mean(key, SWEEP_FILE_KEYS)}"
@@ -226,16 +215,39 @@ def read_sweep_file(path: str | os.PathLike) -> Plan:
         if key not in SWEEP_FILE_KEYS
     ]
     vary, link = (_value_lists(data, table, path, problems) for table in ("vary", "link"))
-    overrides = [f"{dotted}={_toml(value)}" for dotted, value in _leaves(data.get("set", {}))]
+    overrides = [f"{dotted}={_toml(value)}" for dotted, value in table_leaves(data.get("set", {}))]
     if problems:
         raise ModelError(problems)
     return Plan(vary=vary, overrides=overrides, link=link)
 
 
+def read_toml_file(path: Path, what: str) -> dict:
+    """The tables of a TOML file (a sweep or study file).
+
+    Raises
+    ------
+    ModelError
+        If it cannot be read, is not TOML, or is nested or long beyond reason.
+    """
+    try:
+        text = path.read_bytes().decode()
+        if too_deep(text):
+            raise ModelError([f"{path}: {TOO_DEEP}"])
+        return tomllib.loads(text)
+    except OSError as error:
+        raise ModelError([f"{path}: cannot read the {what}; {error.strerror}"]) from None
+    except (UnicodeDecodeError, tomllib.TOMLDecodeError) as error:
+        raise ModelError([f"{path}: not a TOML {what}; {error}"]) from None
+    except RecursionError:
+        raise ModelError([f"{path}: {TOO_DEEP}"]) from None
+    except ValueError:  # a number of thousands of digits
+        raise ModelError([f"{path}: {TOO_LONG}"]) from None
+
+
 def _value_lists(data: dict, table: str, path: Path, problems: list[str]) -> dict[str, list[str]]:
     """A sweep file's ``[vary]`` or ``[link]``: dotted path -> value texts (problems added)."""
     lists: dict[str, list[str]] = {}
-    for dotted, values in _leaves(data.get(table, {}), stop_at_lists=True):
+    for dotted, values in table_leaves(data.get(table, {}), stop_at_lists=True):
         if not isinstance(values, list) or not values:
             problems.append(f"{path}: {table}.{dotted}: expected a non-empty array of values")
         else:
@@ -243,16 +255,17 @@ def _value_lists(data: dict, table: str, path: Path, problems: list[str]) -> dic
     return lists
 
 
-def _leaves(
+def table_leaves(
     table: object, prefix: str = "", *, stop_at_lists: bool = False
 ) -> list[tuple[str, object]]:
+    """The ``(dotted.path, value)`` leaves of nested TOML tables (``[set.solver]``)."""
     if not isinstance(table, dict) or not table:
         return [(prefix, table)] if prefix else []
     leaves = []
     for key, value in table.items():
         dotted = f"{prefix}.{key}" if prefix else key
         if isinstance(value, dict) and value:
-            leaves += _leaves(value, dotted, stop_at_lists=stop_at_lists)
+            leaves += table_leaves(value, dotted, stop_at_lists=stop_at_lists)
         else:
             leaves.append((dotted, value))
     return leaves
@@ -316,16 +329,25 @@ def make_cases(
         raise ModelError(
             [f"vary: the values give {count:,} cases; at most {MAX_CASES:,} run in one sweep"]
         )
-    keys = _short_keys([*vary, *(link or {})])
-    cases = []
-    for parts in itertools.product(*axes):
-        values = {path: text for part in parts for path, text in part.items()}
-        name = "__".join(f"{keys[path]}={_safe(text)}" for path, text in values.items())
-        cases.append(Case(id=name, values=values))
-    return _unique(cases)
+    keys = short_keys([*vary, *(link or {})])
+    values = [
+        {path: text for part in parts for path, text in part.items()}
+        for parts in itertools.product(*axes)
+    ]
+    names = ["__".join(f"{keys[p]}={_safe(t)}" for p, t in case.items()) for case in values]
+    readable = max(map(len, names)) <= MAX_NAME_LENGTH
+    if not readable or len({name.lower() for name in names}) < len(names):  # any file system
+        return indexed_cases(values)
+    return [Case(id=name, values=case) for name, case in zip(names, values, strict=True)]
 
 
-def _short_keys(paths: list[str]) -> dict[str, str]:
+def indexed_cases(values: Sequence[Mapping[str, str]]) -> list[Case]:
+    """Cases named by their index (``case007``), for values too many or long to name them by."""
+    width = max(3, len(str(len(values))))
+    return [Case(id=f"case{i:0{width}d}", values=dict(v)) for i, v in enumerate(values, 1)]
+
+
+def short_keys(paths: list[str]) -> dict[str, str]:
     """The shortest trailing part of each path that tells the paths apart."""
     keys = {}
     for path in paths:
@@ -343,22 +365,6 @@ def _safe(text: str) -> str:
     value = toml_value(text)
     shown = value if isinstance(value, str) else text
     return _UNSAFE.sub("_", shown.strip()).strip("_") or "_"
-
-
-def _unique(cases: list[Case]) -> list[Case]:
-    """Shorten long names and tell apart names that differ only in case or unsafe characters."""
-    seen = {}
-    named = []
-    for case in cases:
-        digest = hashlib.sha1(json.dumps(case.values).encode()).hexdigest()[:8]
-        name = case.id
-        if len(name) > MAX_ID_LENGTH:
-            name = f"{name[: MAX_ID_LENGTH - 9]}-{digest}"
-        if name.lower() in seen:  # case-insensitive file systems
-            name = f"{name}-{digest}"
-        seen[name.lower()] = case
-        named.append(Case(id=name, values=case.values))
-    return named
 
 
 def si_value(model: Model, path: str, text: str) -> object:

@@ -65,8 +65,8 @@ class CaseTask:
         their compiled functions (numba pickles a function by value when it was defined in
         the script or notebook, by reference when imported from a module).
     life_options
-        Further keywords of a long-life wear run (``life``): those of a life run's band
-        companions (``studies.life.companions``); a sweep's cases take the defaults.
+        Further keywords of a long-life wear run (``life``): a study's for its cases, or a
+        life run's for its band companions (``studies.life.companions``).
     """
 
     case: str

@@ -1,0 +1,68 @@
+"""The tolerance study of the four-bar with four clearance joints: the tables of docs/studies.md.
+
+Reads a sampled study's folder (``jointwear sample``) and prints, as Markdown, the statistics
+of its key outputs with their intervals and, per output, the inputs that move it most.
+
+    jointwear sample examples/fourbar_four_clearances.toml \\
+        --file examples/tolerances/fourbar_iso_fit.toml --out results/tolerances
+    python benchmarks/tolerance_study.py results/tolerances
+
+    jointwear sample examples/fourbar_four_clearances.toml \\
+        --file examples/tolerances/fourbar_iso_fit.toml --out results/tolerances_life \\
+        --n 32 --cycles 1000000 --max-change 2%
+    python benchmarks/tolerance_study.py results/tolerances_life
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+from pathlib import Path
+
+import pandas as pd
+
+from jointwear.figures.sample import key_outputs
+from jointwear.figures.sweep import quantity
+
+
+def _input(path: str) -> str:
+    parts = path.split(".")
+    return f"{parts[1]} {parts[-1]}" if path.startswith("joints.") else path
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("folder", type=Path, help="the sampled study's folder")
+    parser.add_argument("--top", type=int, default=3, help="inputs shown per output")
+    folder = parser.parse_args().folder
+    plan = json.loads((folder / "sample.json").read_text())
+    table = pd.read_csv(folder / "sample.csv")
+    stats = pd.read_csv(folder / "statistics.csv").set_index("output")
+    sensitivity = pd.read_csv(folder / "sensitivity.csv")
+    failed = (table["status"] != "success").sum()
+    print(f"{len(table)} cases ({plan['method']}, seed {plan['seed']}), {failed} not success; "
+          f"wall {table['wall_s'].sum():.0f} s summed over cases\n")  # fmt: skip
+    print("| output | mean (95 % interval) | sd | P5 | P50 | P95 (95 % interval) |")
+    print("|---|---|---|---|---|---|")
+    shown = key_outputs(stats.reset_index())
+    for output in shown:
+        row = stats.loc[output]
+        label, factor = quantity(output, abs(float(row["p95"])))
+        v = {key: f"{row[key] * factor:.4g}" for key in row.index if key != "n"}
+        print(f"| {output.partition('.')[0]}: {label} | {v['mean']} ({v['mean_low']} to "
+              f"{v['mean_high']}) | {v['std']} | {v['p5']} | {v['p50']} | {v['p95']} "
+              f"({v['p95_low']} to {v['p95_high']}) |")  # fmt: skip
+    measure = "ST" if "ST" in sensitivity else "rho"
+    print(f"\n| output | inputs that move it most ({measure}, 95 % interval) |")
+    print("|---|---|")
+    for output in shown:
+        rows = sensitivity[sensitivity["output"] == output]
+        rows = rows.reindex(rows[measure].abs().sort_values(ascending=False).index)
+        top = [f"{_input(r['input'])} {r[measure]:+.2f} ({r[f'{measure}_low']:+.2f} to "
+               f"{r[f'{measure}_high']:+.2f})" for _, r in rows.head(3).iterrows()]  # fmt: skip
+        label = quantity(output)[0].rpartition(" [")[0]
+        print(f"| {output.partition('.')[0]}: {label} | {'; '.join(top)} |")
+
+
+if __name__ == "__main__":
+    main()
