@@ -13,6 +13,7 @@ whose compiled kernels round alike but not identically: measured 126 µm in a ba
 import json
 from pathlib import Path
 
+import numpy as np
 import pandas as pd
 import pytest
 
@@ -25,6 +26,7 @@ FOURBAR = ROOT / "examples" / "flores2009_fourbar.toml"
 WEAR = ["joints.coupler_follower.clearance.wear_coefficient=8e-13"]  # 10 x the paper's
 CYCLES = 85  # past the 50 % growth (about turn 76), short of the doubled clearance
 C = 200e-6  # the radial clearance [m]
+HOUR = 3600.0 / 0.04  # crank turns in an hour at 1500 rpm
 
 
 def test_spread_is_the_value_plus_or_minus_the_largest_difference():
@@ -54,6 +56,13 @@ def test_the_band_holds_the_direct_simulation(tmp_path):
     # claim. Measured: 50 % growth at turn 76.5 directly; the runs at 2, 4 and 8 % reach it
     # at 67.5, 81.1 and 78.9, so the band is 67.5 -/+ 13.6 = 53.9 to 81.1.
     assert half["low"] <= reference <= half["high"], (reference, half)
+    hours = band["hours_to_clearance_growth_50pct"]
+    assert hours == {k: pytest.approx(v / HOUR, rel=1e-12) for k, v in half.items()}
+    assert joint["hours_to_clearance_growth_50pct"] == pytest.approx(half["value"] / HOUR)
+    # Not a run-away: from one update to the next the joint's peak force and wear per turn
+    # stay within 2.3 times the median of the three updates before (measured on these runs'
+    # life.csv), well within the factor 10.
+    assert "runaway" not in res.summary and not res.summary["band"]["ran_away"]
     assert res.summary["cycles_reached"] == direct.summary["cycles_reached"] == CYCLES
     # How the band was made, and where its runs are.
     made = res.summary["band"]
@@ -68,6 +77,7 @@ def test_the_band_holds_the_direct_simulation(tmp_path):
     table = pd.read_csv(folder / "life_band.csv")
     assert table.columns.tolist() == band_columns_of(res)
     assert table["runs"].max() == 3 and table["cycles"].iloc[-1] == CYCLES
+    np.testing.assert_allclose(table["hours"], table["cycles"] / HOUR, rtol=1e-11)  # 12 digits
     low, high = (table[f"coupler_follower.clearance_growth_{e}_m"] for e in ("low", "high"))
     assert (low <= table["coupler_follower.clearance_growth_m"]).all() and (low <= high).all()
     assert high.iloc[-1] == pytest.approx(grown["high"], rel=1e-9)
@@ -80,3 +90,44 @@ def band_columns_of(res) -> list[str]:
     from jointwear.model import load_model
 
     return band_columns(load_model(FOURBAR, WEAR))
+
+
+def test_the_band_s_runs_beside_each_other_give_the_numbers_in_series(tmp_path):
+    settings = {"cycles": 40, "overrides": WEAR, "max_change": "2%", "band": ("4%", "8%"),
+                "figures": False}  # fmt: skip
+    reports = []
+    series = life(FOURBAR, tmp_path / "series", **settings, workers=1)
+    beside = life(FOURBAR, tmp_path / "beside", **settings, workers=3,
+                  progress=lambda done, total: reports.append((done, total)))  # fmt: skip
+    assert series.status == beside.status == "success"
+    # The companions ran in other processes (the runners record each in case.json).
+    assert (tmp_path / "beside" / "band" / "4pct" / "case.json").is_file()
+    assert not (tmp_path / "series" / "band" / "4pct" / "case.json").exists()
+    # The same runs: the same numbers, to the last bit, but for the wall times.
+    for name in ("life.csv", "profiles.csv", "life_band.csv", "band/4pct/life.csv",
+                 "band/8pct/life.csv", "band/8pct/profiles.csv"):  # fmt: skip
+        alone, together = (pd.read_csv(tmp_path / run / name) for run in ("series", "beside"))
+        kept = [c for c in alone.columns if c != "wall_s"]
+        pd.testing.assert_frame_equal(alone[kept], together[kept], check_exact=True)
+    assert without_walls(series.summary) == without_walls(beside.summary)
+    # Progress over the three runs' cycles, never backwards.
+    assert reports[-1] == (120, 120)
+    assert [d for d, _ in reports] == sorted(d for d, _ in reports)
+    # The companions on a Dask cluster (a worker in this process, over a real connection).
+    distributed = pytest.importorskip("dask.distributed")
+    with distributed.LocalCluster(
+        n_workers=1, threads_per_worker=1, processes=False, protocol="tcp://",
+        host="127.0.0.1", dashboard_address=None,
+    ) as cluster:  # fmt: skip
+        dask = life(FOURBAR, tmp_path / "dask", **settings, scheduler=cluster.scheduler_address)
+    assert (tmp_path / "dask" / "band" / "8pct" / "case.json").is_file()
+    assert without_walls(dask.summary) == without_walls(series.summary)
+
+
+def without_walls(entry: object) -> object:
+    """A summary without its wall times (``wall_s``, ``elapsed_s``), at every level."""
+    if isinstance(entry, dict):
+        return {k: without_walls(v) for k, v in entry.items() if k not in ("wall_s", "elapsed_s")}
+    if isinstance(entry, list):
+        return [without_walls(v) for v in entry]
+    return entry

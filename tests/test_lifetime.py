@@ -268,8 +268,13 @@ def test_resume_gives_the_uninterrupted_run(tmp_path, monkeypatch, how):
     whole = life(FOURBAR, tmp_path / "whole", **settings)
     assert whole.status == "success" and len(whole.table) > 5
 
+    reports = []
+
     def stop_at_third(cycles: int, total: int) -> None:
-        if cycles == whole.table["cycles"].iloc[3]:  # the third update after the settling
+        # The value's run reports after each of its updates (the band's runs beside it add
+        # their cycles to the count, and report on their own once it has ended).
+        reports.append(cycles)
+        if len(reports) == 4:  # the third update after the settling
             if how == "exception":
                 raise Crash  # as if the process died right after the update
             os.kill(os.getpid(), signal.SIGINT)  # Ctrl-C: the run ends after this update
@@ -317,6 +322,12 @@ def test_resume_gives_the_uninterrupted_run(tmp_path, monkeypatch, how):
     np.testing.assert_array_equal(resumed.final.wear["revolute"], whole.final.wear["revolute"])
     np.testing.assert_array_equal(resumed.final.y, whole.final.y)
     assert resumed.summary["wall_s"] > resumed.table["wall_s"].iloc[3]
+    # The band's runs (beside the value's, where there are cores for them) stopped with it
+    # and went on alike: the default bounds 0.5 % and 1 %.
+    for name in ("band/0.5pct/life.csv", "band/1pct/life.csv", "life_band.csv"):
+        parts, alone = (pd.read_csv(f / name) for f in (folder, tmp_path / "whole"))
+        kept = [c for c in alone.columns if c != "wall_s"]
+        pd.testing.assert_frame_equal(parts[kept], alone[kept], check_exact=True)
 
 
 def test_resume_refuses_other_settings_and_empty_folders(tmp_path):
@@ -352,8 +363,9 @@ def test_a_stop_asked_as_the_last_update_ends_does_not_undo_success(tmp_path):
         ("checkpoint/checkpoint.json", b'{"update": 1}'),
         ("checkpoint/state_000001.npz", b"PK\x03\x04 cut short"),
         ("life.csv", b""),
+        ("life.csv", b"update,cycles,simulated_cycles\n0,2,2\n"),
     ],
-    ids=["not-a-record", "keys-missing", "state-cut-short", "table-emptied"],
+    ids=["not-a-record", "keys-missing", "state-cut-short", "table-emptied", "older-columns"],
 )
 def test_a_damaged_run_is_a_one_line_error_on_resume(tmp_path, file, damage):
     life(FOURBAR, tmp_path, cycles=4, overrides=FAST_WEAR, figures=False)
@@ -480,6 +492,10 @@ def test_cli_life_writes_the_folder(tmp_path):
     summary = json.loads((tmp_path / "summary.json").read_text())
     table = pd.read_csv(tmp_path / "life.csv")
     assert summary["updates"] == table["update"].iloc[-1] and summary["cycles_reached"] == 12
+    # Hours of operation: crank turns of 40 ms.
+    np.testing.assert_allclose(table["hours"], table["cycles"] * PERIOD / 3600, rtol=1e-12)
+    assert summary["hours_reached"] == pytest.approx(12 * PERIOD / 3600, rel=1e-12)
+    assert f"{12 * PERIOD / 3600:.3g} hours of operation" in result.output
     profiles = pd.read_csv(tmp_path / "profiles.csv")
     assert len(profiles) == len(table) * 2 * 36
     again = invoke("life", FOURBAR, "--cycles", 12, "--out", tmp_path, "--set", FAST_WEAR[0],

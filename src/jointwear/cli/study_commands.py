@@ -180,13 +180,36 @@ def life(
             help="Stop when the clearance would grow by this share of the nominal (1: doubled).",
         ),
     ] = 1.0,
+    runaway_factor: Annotated[
+        float,
+        typer.Option(
+            "--runaway-factor",
+            help="Stop when a joint's peak force or wear per cycle jumps by more than this "
+            "factor over the last updates, or it leaves its contact law's range (0: never).",
+        ),
+    ] = 10.0,  # studies.life.settings.RUNAWAY_FACTOR, not imported: the command line starts light
+    workers: Annotated[
+        int | None,
+        typer.Option(
+            "--workers",
+            help="Processes for the band's runs, this one included; 1: one after the other "
+            "[default: one per core].",
+        ),
+    ] = None,
+    scheduler: Annotated[
+        str | None,
+        typer.Option(
+            "--scheduler", help="Dask scheduler address (tcp://host:8786) for the band's runs."
+        ),
+    ] = None,
     figures: Annotated[bool, typer.Option("--figures/--no-figures", help="Draw figures.")] = True,
 ) -> None:
     """Predict the wear of MODEL's clearance joints over many driver cycles.
 
     Simulates a few cycles, extrapolates their wear over many (each update changing a
-    profile by at most --max-change), updates the joint geometry and repeats. OUT gets
-    life.csv (one row per update), profiles.csv, summary.json and figures/.
+    profile by at most --max-change), updates the joint geometry and repeats; the band's
+    runs at the coarser --band bounds run beside it. OUT gets life.csv (one row per update),
+    profiles.csv, summary.json and figures/.
     """
     from ..engine.status import SUCCESS
     from ..model import ModelError
@@ -211,9 +234,12 @@ def life(
                 extrapolate=extrapolate,
                 feedback=feedback,
                 max_growth=max_growth,
+                runaway_factor=runaway_factor,
                 resume=resume,
                 figures=figures,
                 progress=compiling.then(bar),
+                workers=workers,
+                scheduler=scheduler,
             )
     except ModelError as error:
         raise fail(error) from None
@@ -232,41 +258,65 @@ def life(
     out.print(
         f"{summary['status']}: {summary['message']}; {summary['cycles_reached']:,} cycles in "
         f"{summary['updates']} updates ({summary['simulated_cycles']:,} simulated"
-        f"{f', {unsteady} unsteady' if unsteady else ''}), {summary['wall_s']:.3g} s wall",
+        f"{f', {unsteady} unsteady' if unsteady else ''}), {summary['hours_reached']:.3g} "
+        f"hours of operation; {summary['wall_s']:.3g} s wall",
         **PLAIN,
     )
+    band = summary.get("band")
     for name, joint in summary["clearance_joints"].items():
         if "clearance_growth_m" in joint:
             out.print(_life_line(name, joint), **PLAIN)
-        if "band" in joint:
-            out.print(_band_line(name, joint["band"], summary["band"]), **PLAIN)
+        if "band" in joint and not band["all_ran_away"]:
+            out.print(_band_line(name, joint["band"], band), **PLAIN)
+    if band is not None and band["all_ran_away"]:
+        out.print(_ran_away_line(band), **PLAIN)
     out.print(f"results in {out_dir}", **PLAIN)
     if summary["status"] != SUCCESS:
         raise typer.Exit(code=1)
+
+
+def _ran_away_line(band: dict) -> str:
+    """The line that replaces the band's when every run of it ran away."""
+    runs = ", ".join(f"{r['max_change']} in cycle {r['runaway_cycle']:,}" for r in band["runs"])
+    return (
+        f"no band: every run of it ran away ({runs}); their spread says nothing of the "
+        f"prediction's uncertainty; {_walls(band)}"
+    )
+
+
+def _walls(band: dict) -> str:
+    """The band's wall times: its runs' sum, and how long they took side by side."""
+    return f"{band['wall_s']:.3g} s wall in all, {band['elapsed_s']:.3g} s elapsed"
 
 
 def _band_line(name: str, entry: dict, band: dict) -> str:
     """One line of a clearance joint's uncertainty band after a life run."""
     runs = ", ".join(str(b) for b in band["max_change"])
     at, growth = entry["cycles_to_clearance_growth_50pct"], entry["clearance_growth_m"]
-    half = "not reached" if at["value"] is None else f"at {at['value']:,.0f} cycles"
+    hours = entry["hours_to_clearance_growth_50pct"]
+    half = "not reached"
+    if at["value"] is not None:
+        half = f"at {at['value']:,.0f} cycles, {hours['value']:.3g} h"
     if at["low"] is not None:
         high = "not reached" if at["high"] is None else f"{at['high']:,.0f}"
-        half += f" (band {at['low']:,.0f} to {high})"
+        high_h = "" if hours["high"] is None else f" to {hours['high']:.3g}"
+        half += f" (band {at['low']:,.0f} to {high} cycles, {hours['low']:.3g}{high_h} h)"
     grown = "-"
     if growth["value"] is not None:
         grown = f"{growth['value'] * 1e6:.4g} µm ({growth['low'] * 1e6:.4g} to "
         grown += f"{growth['high'] * 1e6:.4g})"
     return (
         f"{name}: band of the runs at max_change {runs}: 50% growth {half}; "
-        f"clearance grown by {grown} at {band['at_cycles']:,} cycles; {band['wall_s']:.3g} s wall"
+        f"clearance grown by {grown} at {band['at_cycles']:,} cycles; {_walls(band)}"
     )
 
 
 def _life_line(name: str, joint: dict) -> str:
     """One line of a clearance joint's wear after a life run."""
     at = joint["cycles_to_clearance_growth_50pct"]
-    half = f"at {at:,.0f} cycles" if at is not None else "not reached"
+    half = "not reached"
+    if at is not None:
+        half = f"at {at:,.0f} cycles, {joint['hours_to_clearance_growth_50pct']:.3g} h"
     depths = [
         f"{surface} {joint[f'max_wear_depth_{surface}_m'] * 1e6:.4g} µm"
         for surface in joint_kind(joint).surfaces

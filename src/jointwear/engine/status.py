@@ -4,8 +4,9 @@ These are the ``status`` values of ``summary.json``, ``case.json``, ``sweep.csv`
 run's ``summary.json``. A run's status is the name of the kernels' ``Status`` code in lowercase
 (``status_name``: ``success``, ``non_finite``, ``singular``, ``max_steps``, ``interrupted``,
 ``constraint_drift``, ``energy_drift``, ``lock_up``);
-a sweep case adds ``error`` and ``not_run``, a life run ``failed``, ``worn_through`` and
-``clearance_limit``. Everything but ``success`` means the work did not get to its end.
+a sweep case adds ``error`` and ``not_run``, a life run ``failed``, ``worn_through``,
+``clearance_limit`` and ``runaway``. Everything but ``success`` means the work did not get to
+its end.
 """
 
 from ..kernels.codes import Status
@@ -16,6 +17,7 @@ __all__ = [
     "FAILED",
     "INTERRUPTED",
     "NOT_RUN",
+    "RUNAWAY",
     "SUCCESS",
     "WORN_THROUGH",
     "Status",
@@ -39,6 +41,7 @@ NOT_RUN = "not_run"  # the sweep stopped before the case ran
 FAILED = "failed"  # one of its simulated runs did not succeed
 WORN_THROUGH = "worn_through"  # a journal would be worn through its radius
 CLEARANCE_LIMIT = "clearance_limit"  # a clearance would grow past max_growth
+RUNAWAY = "runaway"  # a joint's force or wear jumped, or it left its contact law's range
 
 _MESSAGES = {
     Status.RUNNING: "stopped between chunks",

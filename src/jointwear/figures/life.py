@@ -1,9 +1,10 @@
 """Figures of a long-life wear run, from its tables (life.csv, profiles.csv).
 
 ``life_wear.png``: maximum wear depth per surface and effective clearance growth, peak contact
-force and the driver's torque range, against cycles, the clearance growth shaded over its
-uncertainty band where the run has one (life_band.csv); ``life_profiles.png``: the wear profiles
-of every clearance joint at a few cycle counts, each drawn by its kind
+force and the driver's torque range, against cycles (and hours of operation, on the top axis),
+the clearance growth shaded over its uncertainty band where the run has one (life_band.csv),
+and the cycle of a run-away marked where the run stopped at one; ``life_profiles.png``: the
+wear profiles of every clearance joint at a few cycle counts, each drawn by its kind
 (``draw_life_profiles`` of its ``figures_module``: a revolute joint's in polar form, a
 translational joint's along its surfaces).
 """
@@ -40,12 +41,16 @@ def plot_life_wear(
     *,
     growth_mark: float,
     range_column: str,
+    period_s: float,
+    runaway: dict | None = None,
 ) -> Figure:
     """Wear depth and clearance growth, peak contact force [kN], torque range, vs cycles.
 
     ``band`` (life_band.csv) shades the clearance growth's band; ``marks`` (the summary's
     ``clearance_joints``) gives the band of the cycles to the growth of ``growth_mark`` of
-    the gap for the annotation; ``range_column``: the table's column of the driver's range.
+    the gap for the annotation; ``range_column``: the table's column of the driver's range;
+    ``period_s``: the cycle [s], for the axis of hours; ``runaway``: the summary's entry of
+    a run-away, marked at its cycle.
     """
     fig = Figure(figsize=(8.0 + LEGEND_ROOM, 9.0), layout="constrained")
     depth, force, torque = fig.subplots(3, 1, sharex=True)
@@ -54,6 +59,7 @@ def plot_life_wear(
     joints = [(kind, joint) for kind, _, joint in joints_by_kind(model)]
     marks_m = [growth_mark * kind.gap(joint) for kind, joint in joints]
     unit, per_m = length_unit([*table[lengths].to_numpy().ravel(), *marks_m])
+    per_hour = 3600.0 / period_s  # cycles
     for (kind, joint), mark_m in zip(joints, marks_m, strict=True):
         name = joint.name
         mapped = kind.mapped_surfaces(joint)
@@ -72,7 +78,9 @@ def plot_life_wear(
         mark = mark_m * per_m
         depth.axhline(mark, color=line.get_color(), ls=":", lw=1.0)
         reached = cycles_at(table["cycles"], growth, mark)
-        text = f"{growth_mark:.0%} of c" + (f" at {reached:,.0f} cycles" if reached else "")
+        text = f"{growth_mark:.0%} of c"
+        if reached:
+            text += f" at {reached:,.0f} cycles ({reached / per_hour:.3g} h)"
         text += _band_text((marks or {}).get(name, {}).get("band"))
         depth.annotate(
             text, (cycles[0], mark), xytext=(2, 2), textcoords="offset points",
@@ -89,8 +97,19 @@ def plot_life_wear(
     what, unit = ("torque", "N m") if range_column.startswith("torque") else ("force", "N")
     torque.set_ylabel(f"{what} range of driver\n'{driver}', max - min [{unit}]")
     torque.set_xlabel("cycles")
+    top = depth.secondary_xaxis("top", functions=(lambda c: c / per_hour, lambda h: h * per_hour))
+    top.set_xlabel("hours of operation")
     for ax in (depth, force, torque):
         ax.grid(alpha=0.3)
+        if runaway is not None:
+            ax.axvline(runaway["cycle"], color="tab:red", ls="--", lw=1.0)
+    if runaway is not None:
+        depth.annotate(
+            f"run-away of {runaway['joint']} in cycle {runaway['cycle']:,}",
+            (runaway["cycle"], 0.5), xycoords=("data", "axes fraction"), xytext=(-3, 0),
+            textcoords="offset points", ha="right", va="center", rotation=90, color="tab:red",
+            fontsize="small",
+        )  # fmt: skip
     fig.suptitle(f"{model.name}: wear over {int(cycles[-1]):,} cycles")
     return fig
 
@@ -138,14 +157,16 @@ def save_life_figures(
     *,
     growth_mark: float,
     range_column: str,
+    period_s: float,
+    runaway: dict | None = None,
 ) -> list[Path]:
     """Write life_wear.png and life_profiles.png into ``folder``; return their paths.
 
     The other arguments as for ``plot_life_wear``.
     """
-    options = {"growth_mark": growth_mark, "range_column": range_column}
+    options = {"growth_mark": growth_mark, "range_column": range_column, "period_s": period_s}
     figures = (
-        plot_life_wear(model, table, driver, band, marks, **options),
+        plot_life_wear(model, table, driver, band, marks, **options, runaway=runaway),
         plot_life_profiles(model, table, profiles),
     )
     return [save_png(fig, folder / name) for name, fig in zip(LIFE_FIGURES, figures, strict=True)]

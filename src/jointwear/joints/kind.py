@@ -33,7 +33,9 @@ a kind. A kind gives:
    conservatively where the kind cannot tell exactly; ``worn_volume(joint, wear)`` [m^3];
    ``worn_through(joint, wear, when)``: why profiles would leave the model (None if not);
    ``growth_limit``: why the model stops describing a joint whose gap has grown much;
-   ``gap_key``: the gap's key in summaries. ``figures_module`` has
+   ``gap_key``: the gap's key in summaries; ``penetration_range``: the entry of its
+   ``outside_law_ranges`` that holds the penetration against the gap (a life run stops when
+   an update leaves it, ``studies.life.runaway``). ``figures_module`` has
    ``draw_life_profiles(fig, place, joint, profiles, updates)``: the joint's profiles at a few
    updates, drawn into the subplot spec ``place``.
 
@@ -102,6 +104,7 @@ class ClearanceKind:
     gap_key: str = "gap_m"  # the gap's key in its summaries (``gap``)
     life_runs: bool = False  # whether life runs (``studies.life``) support the kind
     growth_limit: str = ""  # why a gap grown much leaves the model, a sentence for life runs
+    penetration_range: str = "penetration_over_clearance"  # outside_law_ranges' entry of it
 
     @property
     def module(self) -> ModuleType:

@@ -84,6 +84,7 @@ class TranslationalKind(ClearanceKind):
     pins_points = False
     slides = True
     life_runs = True
+    penetration_range = "penetration_over_gap"
     growth_limit = (
         "The contact stiffness is that of the nominal corners and the worn profiles enter "
         "only as depths across the guide"
@@ -221,11 +222,11 @@ class TranslationalKind(ClearanceKind):
         from ...model.laws.record import HERTZ_PATCH, PENETRATION
 
         ks = self.module
-        names = {PENETRATION: "penetration_over_gap"}
+        names = {PENETRATION: self.penetration_range}
         if c.corner_radius is not None:
             names[HERTZ_PATCH] = "hertz_half_width_over_corner_radius"
         totals = {
-            "penetration_over_gap": (ks.T_DEPTH_TIME, ks.T_DEPTH_MAX),
+            self.penetration_range: (ks.T_DEPTH_TIME, ks.T_DEPTH_MAX),
             "hertz_half_width_over_corner_radius": (ks.T_PATCH_TIME, ks.T_PATCH_MAX),
         }
         limits = {names[r]: limit for r, limit in c.law_ranges().items() if r in names}

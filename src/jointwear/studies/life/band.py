@@ -24,6 +24,11 @@ settles into one of two wear regimes, and which one differs even between those d
 simulations: there the band holds the growth of some of them only (docs/benchmarks.md,
 "Long-life wear against the direct simulation").
 
+A band whose runs all ran away (``runaway``) measures nothing: they stopped at the same
+blow-up, and their agreement says nothing of when the joint would have reached a milestone.
+``summary.json`` then says so (``all_ran_away``), and the command line prints that instead of
+the band.
+
 ``life.csv`` keeps the value's run; ``life_band.csv`` tabulates the band against cycles
 (``band_table``), and ``summary.json`` gives it per joint (``band_summary``).
 """
@@ -31,33 +36,25 @@ simulations: there the band holds the growth of some of them only (docs/benchmar
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Iterator, Sequence
-from pathlib import Path
+from collections.abc import Iterator, Sequence
 
 import numpy as np
 import pandas as pd
 
+from ...engine.status import RUNAWAY
 from ...joints import ClearanceKind, joints_by_kind
 from ...model import Model
 from ...results.cycles import cycles_at
-from .records import GROWTH_MARK, depth_keys
+from .records import GROWTH_MARK, HOUR_S, depth_keys, hours
 
 BAND = ("0.5%", "1%")  # the companions of the default max_change "0.25%": twice, four times it
 FOLDER = "band"  # the companions' life folders, band/<bound>/
-ENDED = ("success", "clearance_limit", "worn_through")  # runs whose tables count in the band
 
 
 def folder_name(bound: str | float) -> str:
     """The folder of the companion run at ``bound``: ``band/1pct``, ``band/2um``."""
     text = str(bound).replace("%", "pct").replace("/", "_")
     return "".join(c for c in text if c.isalnum() or c in "._-") or "bound"
-
-
-def run_band(
-    bounds: Sequence[str | float], folder: Path, run_one: Callable[[str | float, Path], object]
-) -> dict[str, object]:
-    """Run ``run_one(bound, folder/band/<bound>)`` for every bound; the results by bound."""
-    return {str(bound): run_one(bound, folder / FOLDER / folder_name(bound)) for bound in bounds}
 
 
 def banded(model: Model) -> Iterator[tuple[ClearanceKind, object, list[str]]]:
@@ -71,7 +68,7 @@ def banded(model: Model) -> Iterator[tuple[ClearanceKind, object, list[str]]]:
 
 def band_columns(model: Model) -> list[str]:
     """The columns of life_band.csv, in order."""
-    columns = ["cycles", "runs"]
+    columns = ["cycles", "hours", "runs"]
     for _, joint, keys in banded(model):
         for key in keys:
             stem = key.removesuffix("_m")
@@ -95,12 +92,13 @@ def _curve(table: pd.DataFrame, column: str, at: np.ndarray) -> np.ndarray:
 
 
 def band_table(
-    model: Model, value: pd.DataFrame, companions: Sequence[pd.DataFrame]
+    model: Model, value: pd.DataFrame, companions: Sequence[pd.DataFrame], period: float
 ) -> pd.DataFrame:
     """life_band.csv: the value's curves and the band around them, against cycles.
 
-    On every cycle count of any run within the value's rows; ``runs`` counts the runs that
-    reached it (the value's included). Where no companion did, low and high are the value.
+    On every cycle count of any run within the value's rows (and its hours, cycles of
+    ``period`` [s]); ``runs`` counts the runs that reached it (the value's included). Where
+    no companion did, low and high are the value.
     """
     tables = [t for t in companions if len(t)]
     cycles = np.unique(np.concatenate([t["cycles"].to_numpy(float) for t in [value, *tables]]))
@@ -119,6 +117,7 @@ def band_table(
             data[f"{joint.name}.{stem}_high_m"] = centre + half
     table = pd.DataFrame(data)
     table["cycles"] = table["cycles"].round().astype("int64")
+    table["hours"] = table["cycles"] * period / HOUR_S
     return table[band_columns(model)]
 
 
@@ -142,6 +141,7 @@ def band_summary(
     companions: dict[str, pd.DataFrame],
     runs: list[dict],
     cycles: int,
+    period: float,
 ) -> tuple[dict, dict[str, dict]]:
     """The band's entries of summary.json: at the top, and per clearance joint.
 
@@ -154,30 +154,37 @@ def band_summary(
     companions
         life.csv of every companion that ended with a table, by bound.
     runs
-        ``{max_change, folder, status, cycles_reached, wall_s}`` of every run of the band,
-        the value's first.
+        ``{max_change, folder, status, cycles_reached, wall_s, runaway_cycle}`` of every run
+        of the band, the value's first.
     cycles
         The cycles asked for. A companion that stopped before them (at the clearance limit)
         without reaching 50 % growth says nothing of when it would have (its last update
-        jumped past the mark and the limit): it is left out of that figure; one that ran
-        them all without reaching it leaves ``high`` None.
+        jumped past the mark and the limit), or ran away before it, says nothing of when it
+        would have: it is left out of that figure; one that ran them all without reaching it
+        leaves ``high`` None.
+    period
+        The cycle [s]: the cycles to 50 % growth are also given in hours.
 
     Returns
     -------
     tuple
-        ``band`` (how it was made, the runs, and ``at_cycles``: the cycle count at which the
-        end-of-run figures are compared, the fewest any run reached) and, per joint,
-        ``{value, low, high}`` of the cycles to 50 % clearance growth and of the clearance
-        growth and the deepest cells at ``at_cycles``.
+        ``band`` (how it was made, the runs, ``at_cycles``: the cycle count at which the
+        end-of-run figures are compared, the fewest any run reached, ``ran_away``: the
+        ``max_change`` of the runs that ran away, and ``all_ran_away``) and, per joint,
+        ``{value, low, high}`` of the cycles (and hours) to 50 % clearance growth and of the
+        clearance growth and the deepest cells at ``at_cycles``.
     """
     tables = [t for t in companions.values() if len(t)]
     ends = [int(t["cycles"].iloc[-1]) for t in [value, *tables] if len(t)]
     at = min(ends) if ends else 0
+    ran_away = [r["max_change"] for r in runs if r["status"] == RUNAWAY]
     top = {
         "rule": "value -/+ the largest difference between a companion run and the value",
         "max_change": [r["max_change"] for r in runs],
         "runs": runs,
         "at_cycles": at,
+        "ran_away": ran_away,
+        "all_ran_away": len(ran_away) == len(runs),
     }
     joints: dict[str, dict] = {}
     if not len(value):
@@ -187,10 +194,10 @@ def band_summary(
         column = f"{joint.name}.clearance_growth_m"
         crossings = [(cycles_at(t["cycles"], t[column], mark), t) for t in tables]
         known = [at for at, t in crossings if at is not None or t["cycles"].iloc[-1] >= cycles]
+        half = spread(cycles_at(value["cycles"], value[column], mark), known)
         entry = {
-            "cycles_to_clearance_growth_50pct": spread(
-                cycles_at(value["cycles"], value[column], mark), known
-            )
+            "cycles_to_clearance_growth_50pct": half,
+            "hours_to_clearance_growth_50pct": {e: hours(x, period) for e, x in half.items()},
         }
         for key in keys:
             column = f"{joint.name}.{key}"

@@ -111,14 +111,19 @@ def save_checkpoint(folder: Path, point: Checkpoint, record: dict) -> None:
             remove(old)
 
 
-def load_checkpoint(folder: Path, record: dict) -> Checkpoint:
+def load_checkpoint(
+    folder: Path, record: dict, columns: list[str], profile_columns: list[str]
+) -> Checkpoint:
     """The last checkpoint of the run in ``folder``, its tables cut back to it.
+
+    ``columns`` and ``profile_columns``: those life.csv and profiles.csv must have.
 
     Raises
     ------
     ModelError
-        If ``folder`` holds no life run, a damaged one, or one started with other settings
-        (but for a larger ``max_growth``) or another model.
+        If ``folder`` holds no life run, a damaged one (or tables of other columns: an
+        earlier version's), or one started with other settings (but for a larger
+        ``max_growth`` or ``runaway_factor``, or a ``runaway_factor`` of 0) or another model.
     """
     path = folder / CHECKPOINTS / CHECKPOINT
     try:
@@ -136,8 +141,8 @@ def load_checkpoint(folder: Path, record: dict) -> Checkpoint:
     if problems:
         raise ModelError(problems)
     try:
-        for name in (TABLE, PROFILES):
-            _cut(folder / name, counts[0] if state_file else -1)
+        for name, header in ((TABLE, columns), (PROFILES, profile_columns)):
+            _cut(folder / name, header, counts[0] if state_file else -1)
         state = load_run_state(folder / CHECKPOINTS / state_file) if state_file else None
     except Exception as error:  # whatever a damaged table or state file raises
         raise _damaged(folder, error) from None
@@ -149,12 +154,12 @@ def _differences(folder: Path, data: dict, given: dict) -> list[str]:
     problems = []
     for key, value in data["settings"].items():
         new = given["settings"].get(key)
-        if new == value or (key == "max_growth" and new > value):  # a larger limit: it goes on
+        if new == value or (key in LIMITS and _looser(new, value)):  # a looser limit: it goes on
             continue
         problems.append(
             f"{key}: {new!r} differs from the {value!r} the run in {folder} was started with; "
-            "give the same settings to resume (max_growth may be larger), or start afresh "
-            "without --resume"
+            "give the same settings to resume (max_growth and runaway_factor may be larger, "
+            "runaway_factor 0), or start afresh without --resume"
         )
     if data["model"] != given["model"]:
         problems.append(
@@ -163,6 +168,14 @@ def _differences(folder: Path, data: dict, given: dict) -> list[str]:
             "or start afresh without --resume"
         )
     return problems
+
+
+LIMITS = ("max_growth", "runaway_factor")  # settings a resumed run may loosen (a stop's)
+
+
+def _looser(new: float, old: float) -> bool:
+    """Whether limit ``new`` lets a run go further than ``old`` (0: no limit)."""
+    return old != 0 and (new == 0 or new > old)
 
 
 def _damaged(folder: Path, error: Exception) -> ModelError:
@@ -175,6 +188,19 @@ def read_tables(folder: Path) -> tuple[pd.DataFrame, pd.DataFrame]:
     return tuple(pd.read_csv(folder / name) for name in (TABLE, PROFILES))
 
 
+def cycles_done(folder: Path) -> int:
+    """The cycles the last checkpoint of the run in ``folder`` reached; 0 if none."""
+    try:
+        return int(json.loads((folder / CHECKPOINTS / CHECKPOINT).read_text())["cycles"])
+    except (OSError, ValueError, LookupError, TypeError):
+        return 0
+
+
+def forget_checkpoint(folder: Path) -> None:
+    """Remove the checkpoint of an earlier run in ``folder`` (one starting afresh does too)."""
+    remove(folder / CHECKPOINTS / CHECKPOINT)
+
+
 def write_band(folder: Path, table: pd.DataFrame) -> None:
     """Write life_band.csv, whole or not at all."""
     write_atomic(folder / BAND_TABLE, lambda p: table.to_csv(p, index=False, float_format="%.12g"))
@@ -185,15 +211,22 @@ def write_summary(folder: Path, summary: dict) -> None:
     write_text(folder / SUMMARY, json.dumps(summary, indent=2))
 
 
-def _cut(path: Path, update: int) -> None:
+def _cut(path: Path, header: list[str], update: int) -> None:
     """Keep the header and the whole rows of updates up to ``update`` (first column).
 
     A row cut short by a crash while it was written is not whole.
+
+    Raises
+    ------
+    ValueError
+        If the table's header is not ``header`` (lost, or an earlier version's columns).
     """
     with open(path, newline="") as f:
         rows = list(csv.reader(f))
     if not rows:
         raise ValueError(f"{path.name} has lost its header")
+    if rows[0] != header:
+        raise ValueError(f"{path.name} has other columns than this version of jointwear writes")
     kept = [row for row in rows[1:] if len(row) == len(rows[0]) and int(row[0]) <= update]
     if len(kept) < len(rows) - 1:
         _write_rows(path, rows[0], kept)

@@ -3,7 +3,8 @@
 Every clearance joint of a kind that life runs support (``ClearanceKind.life_runs``) is
 recorded alike: per mapped surface its deepest cell, the effective clearance growth (the
 kind's measure, ``ClearanceKind.clearance_growth``), the volume the profiles hold, the
-largest wear per cycle and the peak contact force.
+largest wear per cycle, the peak contact force and the largest penetration against the gap.
+Cycles are also given as hours of operation (``hours``: cycles times the driver's period).
 """
 
 from __future__ import annotations
@@ -23,6 +24,8 @@ from ...results.clearance import wear_columns, wear_table
 from ...results.cycles import cycles_at
 
 GROWTH_MARK = 0.5  # the summary reports the cycles at which the growth reached this share of c
+PENETRATION_KEY = "max_penetration_over_gap"  # life.csv: the measured cycles' largest [-]
+HOUR_S = 3600.0
 Profiles = dict[str, NDArray[np.float64]]  # per joint type, (joints, surfaces, cells) [m]
 
 
@@ -57,9 +60,18 @@ def clearance_growths(
     }
 
 
-def figure_options(model: Model, driver: str) -> dict:
-    """What the life figures take of the study: the growth mark and the driver's range column."""
-    return {"growth_mark": GROWTH_MARK, "range_column": driver_columns(model, driver)[1]}
+def hours(cycles: float | None, period: float) -> float | None:
+    """Hours of operation of ``cycles`` cycles of ``period`` [s]; None for None (never)."""
+    return None if cycles is None else cycles * period / HOUR_S
+
+
+def figure_options(model: Model, driver: str, period: float) -> dict:
+    """What the life figures take of the study: growth mark, driver's range column, period."""
+    return {
+        "growth_mark": GROWTH_MARK,
+        "range_column": driver_columns(model, driver)[1],
+        "period_s": period,
+    }
 
 
 def driver_columns(model: Model, driver: str) -> tuple[str, str]:
@@ -80,7 +92,7 @@ def depth_keys(kind: ClearanceKind, joint: object) -> list[str]:
 
 def table_columns(model: Model, driver: str) -> list[str]:
     """The columns of life.csv, in order."""
-    columns = ["update", "cycles", "simulated_cycles", "extrapolated_cycles", "steady"]
+    columns = ["update", "cycles", "hours", "simulated_cycles", "extrapolated_cycles", "steady"]
     for kind, _, joint in joints_by_kind(model):
         keys = [*depth_keys(kind, joint), *_JOINT_KEYS]
         columns += [f"{joint.name}.{key}" for key in keys]
@@ -97,6 +109,7 @@ _JOINT_KEYS = (
     "worn_volume_m3",
     "wear_rate_m_per_cycle",
     "max_contact_force_n",
+    PENETRATION_KEY,
 )
 
 
@@ -104,6 +117,7 @@ def update_row(
     model: Model,
     driver: str,
     counts: tuple[int, int, int, int, int],
+    period: float,
     wear: Profiles,
     rate: Profiles,
     growth: dict[str, float],
@@ -119,6 +133,8 @@ def update_row(
     counts
         Update number, cycles so far, cycles simulated so far, cycles extrapolated by it,
         and 1 if the measured cycles were steady (else 0).
+    period
+        The cycle [s].
     wear
         The profiles after the update [m].
     rate
@@ -130,15 +146,18 @@ def update_row(
     wall_s
         Wall time of the whole run so far [s].
     """
-    row: list = list(counts)
+    row: list = [counts[0], counts[1], hours(counts[1], period), *counts[2:]]
     for kind, k, joint in joints_by_kind(model):
         mine = wear[kind.name][k]
+        figures = [r.summary["clearance_joints"][joint.name] for r in runs]
+        ranges = [f.get("outside_law_ranges", {}).get(kind.penetration_range) for f in figures]
         row += [depth for depth, _ in deepest_cells(kind, joint, mine).values()]
         row += [
             growth[joint.name],
             kind.worn_volume(joint, mine),
             float(cells(kind, joint, rate[kind.name][k]).max()),
-            max(r.summary["clearance_joints"][joint.name]["max_contact_force_n"] for r in runs),
+            max(f["max_contact_force_n"] for f in figures),
+            max((r["largest"] for r in ranges if r is not None), default=float("nan")),
         ]
     column = driver_columns(model, driver)[0]
     torque = np.concatenate([r.timeseries[column].to_numpy() for r in runs])
@@ -168,14 +187,17 @@ def life_summary(
     wear
         The final profiles [m], or None if no update was made.
     outcome
-        status, message, cycles, period_s, driver, wall_s, settings: written first, as given.
+        status, message, cycles, period_s, driver, wall_s, settings (and ``runaway`` if the
+        run ran away): written first, as given.
     """
     last = table.iloc[-1] if len(table) else None
+    reached = int(last["cycles"]) if last is not None else 0
     summary = {
         "jointwear_version": __version__,
         "model": model.name,
         **outcome,
-        "cycles_reached": int(last["cycles"]) if last is not None else 0,
+        "cycles_reached": reached,
+        "hours_reached": hours(reached, outcome["period_s"]),
         "updates": int(last["update"]) if last is not None else 0,
         "simulated_cycles": int(last["simulated_cycles"]) if last is not None else 0,
         "unsteady_updates": int((table["steady"] == 0).sum()),
@@ -193,9 +215,9 @@ def life_summary(
             entry["clearance_growth_fraction"] = growth / c
             entry["worn_volume_m3"] = float(last[f"{name}.worn_volume_m3"])
             entry["max_contact_force_n"] = float(table[f"{name}.max_contact_force_n"].max())
-            entry["cycles_to_clearance_growth_50pct"] = cycles_at(
-                table["cycles"], table[f"{name}.clearance_growth_m"], GROWTH_MARK * c
-            )
+            half = cycles_at(table["cycles"], table[f"{name}.clearance_growth_m"], GROWTH_MARK * c)
+            entry["cycles_to_clearance_growth_50pct"] = half
+            entry["hours_to_clearance_growth_50pct"] = hours(half, outcome["period_s"])
             where, unit = kind.wear_position.rsplit("_", 1)  # angle_deg, position_m
             for surface, (_, place) in deepest_cells(kind, joint, wear[kind.name][k]).items():
                 entry[f"max_wear_{where}_{surface}_{unit}"] = place

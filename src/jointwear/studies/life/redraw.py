@@ -22,7 +22,8 @@ def redraw_life_figures(folder: str | os.PathLike) -> list[Path]:
     path = Path(folder)
     model = load_model(path)  # its model.json
     try:
-        driver = json.loads((path / files.SUMMARY).read_text())["driver"]
+        summary = json.loads((path / files.SUMMARY).read_text())
+        driver, period = summary["driver"], summary["period_s"]
         table, profiles = files.read_tables(path)
     except (OSError, ValueError, LookupError, TypeError) as error:
         raise ModelError(
@@ -30,5 +31,8 @@ def redraw_life_figures(folder: str | os.PathLike) -> list[Path]:
         ) from None
     from ...figures.life import save_life_figures  # matplotlib only when drawing
 
-    options = figure_options(model, driver)
-    return save_life_figures(model, driver, table, profiles, path / files.FIGURES, **options)
+    options = figure_options(model, driver, period)
+    return save_life_figures(
+        model, driver, table, profiles, path / files.FIGURES, runaway=summary.get("runaway"),
+        **options,
+    )  # fmt: skip

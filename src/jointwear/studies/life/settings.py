@@ -18,6 +18,7 @@ from ...units import to_si
 
 MAX_CYCLES = 10**15  # more cycles than any machine runs, and within a table's 64-bit integers
 PERIOD_RTOL = 1e-9  # periods whose ratio is this close to a whole number divide each other
+RUNAWAY_FACTOR = 10.0  # a jump by more than this over the last updates is a run-away (runaway)
 
 
 @dataclass(frozen=True)
@@ -33,6 +34,7 @@ class LifeSettings:
     extrapolate: bool = True
     feedback: bool | None = None
     max_growth: float = 1.0
+    runaway_factor: float = RUNAWAY_FACTOR
 
     def problems(self) -> list[str]:
         """One line per invalid setting (empty if all are fine)."""
@@ -64,6 +66,13 @@ class LifeSettings:
             lines.append(
                 f"max_growth: {growth!r} is not a finite positive number; give the clearance "
                 "growth at which to stop as a share of the nominal clearance (1.0: doubled)"
+            )
+        factor = self.runaway_factor
+        if not _number(factor) or not (factor == 0 or 1 < factor < math.inf):
+            lines.append(
+                f"runaway_factor: {factor!r} is not a finite number above 1, nor 0; give the "
+                f"jump of a joint's peak force or wear per cycle over the last updates that "
+                f"stops the run (default {RUNAWAY_FACTOR:g}), or 0 for no run-away check"
             )
         return lines
 

@@ -23,18 +23,20 @@ multibody systems with revolute joint wear", Wear 268 (2010) 643-652, a life run
 4. repeats 2-3 until ``cycles`` cycles are done.
 
 Then, unless ``band`` is empty, the same life run at each bound of ``band`` (``band``): the
-spread of these runs around the one at ``max_change`` is the prediction's uncertainty.
+spread of these runs around the one at ``max_change`` is the prediction's uncertainty. They
+run beside it, in local processes or on a Dask cluster (``companions``).
 
 A cycle is the period of the model's drivers (an angle driver at constant speed: 2 pi /
 speed; a harmonic function: 2 pi / angular frequency). The run stops early, with its status
 and a message, if a simulated run fails or is interrupted (Ctrl-C, SIGTERM: the update in
 progress is lost, nothing else), if a part would be worn through (a journal through its
-radius, a slider through its height: ``ClearanceKind.worn_through``), or if a joint's
+radius, a slider through its height: ``ClearanceKind.worn_through``), if a joint's
 effective clearance (``ClearanceKind.clearance_growth``) would grow by more than
 ``max_growth`` times its nominal clearance (default 1: doubled): the contact stiffness is
 computed from the nominal geometry, and the worn profile enters the contact only as a depth
 (its slope neglected), so well past the nominal clearance the model no longer describes the
-joint.
+joint; or if a joint runs away (its peak force or wear per cycle jumps by more than
+``runaway_factor``, or it leaves its contact law's range: ``runaway``).
 
 Every joint type whose kind supports life runs (``ClearanceKind.life_runs``: revolute and
 translational) is extrapolated alike, its profiles per joint type in ``RunState.wear``.
@@ -42,6 +44,7 @@ translational) is extrapolated alike, its profiles per joint type in ``RunState.
 
 from __future__ import annotations
 
+import time
 from collections.abc import Callable, Sequence
 from dataclasses import asdict, dataclass
 from os import PathLike
@@ -55,10 +58,11 @@ from ...joints import joints_by_kind
 from ...model import Model, ModelError, load_model
 from ...results.run_state import RunState
 from . import files
-from .band import BAND, band_summary, band_table, folder_name, run_band
+from .band import BAND, band_summary, band_table, folder_name
 from .band import FOLDER as BAND_FOLDER
+from .companions import Band, Companion, companion, local_processes
 from .records import figure_options, life_summary, profile_columns, table_columns
-from .settings import LifeSettings, cycle_driver, with_feedback
+from .settings import MAX_CYCLES, RUNAWAY_FACTOR, LifeSettings, cycle_driver, with_feedback
 from .update import RESUME, LifeRun
 
 LifeProgress = Callable[[int, int], None]  # (cycles done, cycles asked for)
@@ -87,7 +91,7 @@ class LifeResults:
 
     @property
     def status(self) -> str:
-        """``success``, ``interrupted``, ``failed``, ``clearance_limit`` or ``worn_through``."""
+        """How the run ended: ``success``, or what stopped it (``engine.status``)."""
         return self.summary["status"]
 
     @property
@@ -111,9 +115,12 @@ def life(
     extrapolate: bool = True,
     feedback: bool | None = None,
     max_growth: float = 1.0,
+    runaway_factor: float = RUNAWAY_FACTOR,
     resume: bool = False,
     figures: bool = True,
     progress: LifeProgress | None = None,
+    workers: int | None = None,
+    scheduler: str | None = None,
 ) -> LifeResults:
     """Predict the wear of ``model_path``'s clearance joints over ``cycles`` driver cycles.
 
@@ -158,13 +165,24 @@ def life(
     max_growth
         Stop when a joint's effective clearance would grow by more than this share of its
         nominal clearance [-] (module docstring).
+    runaway_factor
+        Stop (status ``runaway``) when a joint's peak contact force or wear per cycle in a
+        simulated cycle is more than this many times the median of the last updates', or
+        when it leaves its contact law's range (``runaway``) [-]; 0: no such check.
     resume
-        Continue the run interrupted in ``out``, with the same settings and model.
+        Continue the run interrupted in ``out``, with the same settings and model (but
+        ``max_growth`` and ``runaway_factor`` may be larger, ``runaway_factor`` 0).
     figures
         Draw the figures into ``out/figures``.
     progress
-        Called after every update with the cycles done and to do, over all the runs of
-        the band (``cycles`` each).
+        Called as the runs go on with the cycles done and to do, over all the runs of the
+        band (``cycles`` each).
+    workers
+        Processes for the runs of the band, this one included (``companions``); None: one
+        per core; 1: one run after the other, here.
+    scheduler
+        Address of a Dask distributed scheduler (``tcp://host:8786``) to run the band's
+        companions on; its workers must see ``out`` at the same path.
 
     Returns
     -------
@@ -178,9 +196,9 @@ def life(
     """
     settings = LifeSettings(
         cycles, settle_cycles, measure_cycles, steady_tolerance, max_update_cycles, max_change,
-        extrapolate, feedback, max_growth,
+        extrapolate, feedback, max_growth, runaway_factor,
     )  # fmt: skip
-    problems = settings.problems()
+    problems = settings.problems() + _runner_problems(workers, scheduler)
     bounds = list(dict.fromkeys(band)) if extrapolate else []
     for bound in bounds:
         try:
@@ -208,52 +226,80 @@ def life(
         raise ModelError(problems)
     folder = Path(out)
     record = {"settings": asdict(settings), "model": model.model_dump(mode="json")}
+    columns = (table_columns(model, driver), profile_columns(model))
     if resume:
-        point = files.load_checkpoint(folder, record)
+        point = files.load_checkpoint(folder, record, *columns)
+        rows = files.read_tables(folder)[0].to_dict("records")
     else:
-        columns = (table_columns(model, driver), profile_columns(model))
         files.start_folder(folder, *columns, record)
-        point = files.Checkpoint(0, 0, 0, 0.0, None)
+        point, rows = files.Checkpoint(0, 0, 0, 0.0, None), []
     total = cycles * (1 + len(bounds))
+    options = {
+        "settle_cycles": settle_cycles, "measure_cycles": measure_cycles,
+        "steady_tolerance": steady_tolerance, "max_update_cycles": max_update_cycles,
+        "band": (), "max_growth": max_growth, "runaway_factor": runaway_factor,
+        "figures": False,
+    }  # fmt: skip
+    processes = local_processes(workers, len(bounds))
+    band = Band(bounds, folder, model, cycles, options, resume, processes, scheduler)
+    started = time.perf_counter()
     with stop_requests() as stop:
-        run = LifeRun(model, settings, driver, period, folder, record, point.wall_s, stop)
-        while point.cycles < cycles and run.status == SUCCESS:
-            point = run.update(point)
-            if progress is not None and run.status == SUCCESS:
-                progress(point.cycles, total)
-            if stop[0] and run.status == SUCCESS and point.cycles < cycles:
-                run.stop(INTERRUPTED, f"interrupted at {point.cycles} cycles{RESUME}")
-    with stop_requests():  # the folder is completed whatever comes now
-        table, profiles = files.read_tables(folder)
-        wear = None if point.state is None else point.state.wear
-        outcome = {
-            "status": run.status,
-            "message": run.message,
-            "cycles": cycles,
-            "period_s": period,
-            "driver": driver,
-            "wall_s": run.wall(),
-            "settings": {**record["settings"], "overrides": list(overrides)},
-        }
-        summary = life_summary(model, table, wear, outcome)
-        files.write_summary(folder, summary)
+        run = LifeRun(model, settings, driver, period, folder, record, point.wall_s, stop, rows)
+        try:
+            band.start(stop, compiled=False)
+            while point.cycles < cycles and run.status == SUCCESS:
+                point = run.update(point)
+                if run.status not in (INTERRUPTED, FAILED):
+                    band.start(stop, compiled=True)
+                if progress is not None and run.status == SUCCESS:
+                    progress(point.cycles + band.cycles_done(), total)
+                if stop[0] and run.status == SUCCESS and point.cycles < cycles:
+                    run.stop(INTERRUPTED, f"interrupted at {point.cycles} cycles{RESUME}")
+            if run.status in (INTERRUPTED, FAILED):
+                band.abandon(stop)  # the band of a run that did not end means nothing
+            else:
+                band.start(stop, compiled=True)  # resumed at its end: it made no update here
+            # The folder is completed whatever comes now.
+            table, profiles = files.read_tables(folder)
+            wear = None if point.state is None else point.state.wear
+            outcome = {
+                "status": run.status,
+                "message": run.message,
+                "cycles": cycles,
+                "period_s": period,
+                "driver": driver,
+                "wall_s": run.wall(),
+                "settings": {**record["settings"], "overrides": list(overrides)},
+            }
+            if run.runaway is not None:
+                outcome["runaway"] = run.runaway.record()
+            summary = life_summary(model, table, wear, outcome)
+            files.write_summary(folder, summary)
+            done = point.cycles
+            report = None if progress is None else lambda c: progress(done + c, total)
+            companions = band.collect(report)
+        except BaseException:
+            band.abandon(stop)  # the runs beside it stop at their next cycle, resumable
+            raise
     shaded = None
     if bounds and run.status not in (INTERRUPTED, FAILED):
+        if not band.beside:
 
-        def companion(bound: str | float, where: Path) -> LifeResults:
-            done = cycles * (1 + bounds.index(bound))
-            return life(
-                model, where, cycles=cycles, settle_cycles=settle_cycles,
-                measure_cycles=measure_cycles, steady_tolerance=steady_tolerance,
-                max_update_cycles=max_update_cycles, max_change=bound, band=(),
-                max_growth=max_growth, figures=False,
-                resume=resume and (where / files.CHECKPOINTS / files.CHECKPOINT).is_file(),
-                progress=None if progress is None else lambda c, _: progress(done + c, total),
-            )  # fmt: skip
+            def one(bound: str | float, where: Path) -> Companion:
+                offset = cycles * (1 + bounds.index(bound))
+                res = life(
+                    model, where, cycles=cycles, **options, max_change=bound,
+                    resume=band.resumed[str(bound)], workers=1,
+                    progress=None if progress is None else lambda c, _: progress(offset + c, total),
+                )  # fmt: skip
+                return companion(res.summary, res.table)
 
-        companions = run_band(bounds, folder, companion)
+            companions = {bound: one(bound, where) for bound, where in band.places.items()}
+        elapsed = time.perf_counter() - started
         with stop_requests():
-            summary, shaded = _with_band(model, folder, table, summary, max_change, companions)
+            summary, shaded = _with_band(
+                model, folder, table, summary, max_change, companions, elapsed
+            )
             files.write_summary(folder, summary)
     if figures and len(table):
         with stop_requests():
@@ -261,9 +307,24 @@ def life(
 
             save_life_figures(
                 model, driver, table, profiles, folder / files.FIGURES, band=shaded,
-                marks=summary["clearance_joints"], **figure_options(model, driver),
+                marks=summary["clearance_joints"], runaway=summary.get("runaway"),
+                **figure_options(model, driver, period),
             )  # fmt: skip
     return LifeResults(table, profiles, summary, point.state)
+
+
+def _runner_problems(workers: int | None, scheduler: str | None) -> list[str]:
+    """What is wrong with where the band's runs are to run (``workers``, ``scheduler``)."""
+    problems = []
+    whole = isinstance(workers, int) and not isinstance(workers, bool)
+    if workers is not None and not (whole and 1 <= workers <= MAX_CYCLES):
+        problems.append(f"workers: got {workers!r}; expected a whole number from 1")
+    if workers is not None and scheduler is not None:
+        problems.append(
+            "workers: only for local processes; with a scheduler the cluster's workers run "
+            "the band's companions"
+        )
+    return problems
 
 
 def _with_band(
@@ -272,19 +333,26 @@ def _with_band(
     table: pd.DataFrame,
     summary: dict,
     max_change: str | float,
-    companions: dict[str, LifeResults],
+    companions: dict[str, Companion],
+    elapsed: float,
 ) -> tuple[dict, pd.DataFrame]:
-    """The summary with the band's entries, and life_band.csv (written into ``folder``)."""
-    runs = [{"max_change": str(max_change), "folder": ".", "status": summary["status"],
-             "cycles_reached": summary["cycles_reached"], "wall_s": summary["wall_s"]}]  # fmt: skip
-    for bound, res in companions.items():
-        where = f"{BAND_FOLDER}/{folder_name(bound)}"
+    """The summary with the band's entries, and life_band.csv (written into ``folder``).
+
+    ``elapsed``: the wall time of this session's runs of the band, side by side or not [s].
+    """
+    mine = companion(summary, table)
+    runs = []
+    for bound, res, where in [
+        (str(max_change), mine, "."),
+        *((b, r, f"{BAND_FOLDER}/{folder_name(b)}") for b, r in companions.items()),
+    ]:
         runs.append({"max_change": bound, "folder": where, "status": res.status,
-                     "cycles_reached": res.summary["cycles_reached"],
-                     "wall_s": res.summary["wall_s"]})  # fmt: skip
+                     "cycles_reached": res.cycles_reached, "wall_s": res.wall_s,
+                     "runaway_cycle": res.runaway_cycle})  # fmt: skip
     ended = {b: r.table for b, r in companions.items() if r.status not in (INTERRUPTED, FAILED)}
-    top, joints = band_summary(model, table, ended, runs, summary["cycles"])
-    summary = {**summary, "band": {**top, "wall_s": sum(r["wall_s"] for r in runs)}}
+    top, joints = band_summary(model, table, ended, runs, summary["cycles"], summary["period_s"])
+    wall = {"wall_s": sum(r["wall_s"] for r in runs), "elapsed_s": elapsed}
+    summary = {**summary, "band": {**top, **wall}}
     for name, entry in joints.items():
         summary["clearance_joints"][name]["band"] = entry
     stopped = [b for b, r in companions.items() if r.status == INTERRUPTED]
@@ -294,7 +362,9 @@ def _with_band(
             f"the band's run at max_change {stopped[0]} was interrupted; the band is that of "
             f"the runs that ended{RESUME}"
         )
-    shaded = band_table(model, table, list(ended.values())) if len(table) else None
+    shaded = (
+        band_table(model, table, list(ended.values()), summary["period_s"]) if len(table) else None
+    )
     if shaded is not None:
         files.write_band(folder, shaded)
     return summary, shaded

@@ -1,7 +1,8 @@
 """One update of a long-life wear run: simulate, measure, extrapolate, record.
 
 ``study.life`` describes the method; ``LifeRun.update`` carries out one step of it and
-writes its row, profiles and checkpoint (``files``).
+writes its row, profiles and checkpoint (``files``), and stops the run at a run-away
+(``runaway``).
 """
 
 from __future__ import annotations
@@ -13,14 +14,15 @@ from pathlib import Path
 import numpy as np
 
 from ...engine.simulate import simulate
-from ...engine.status import CLEARANCE_LIMIT, FAILED, INTERRUPTED, SUCCESS, WORN_THROUGH
+from ...engine.status import CLEARANCE_LIMIT, FAILED, INTERRUPTED, RUNAWAY, SUCCESS, WORN_THROUGH
 from ...joints import joints_by_kind
 from ...model import Model
 from ...results import Results
 from ...results.clearance import UM
 from ...results.run_state import RunState
 from . import files
-from .records import Profiles, cells, clearance_growths, profile_rows, update_row
+from .records import Profiles, cells, clearance_growths, profile_rows, table_columns, update_row
+from .runaway import Runaway, Watch
 from .settings import LifeSettings
 
 RESUME = "; --resume (resume=True) goes on from there"
@@ -41,6 +43,13 @@ class LifeRun:
         Wall time of the earlier sessions of the run [s].
     stop_requested
         The flag of ``interrupts.stop_requests``: once set, no further cycle is simulated.
+    rows
+        life.csv's rows of the earlier sessions, as dictionaries (``runaway.Watch``).
+
+    Attributes
+    ----------
+    runaway
+        The run-away that stopped the run, if one did.
     """
 
     def __init__(
@@ -53,11 +62,15 @@ class LifeRun:
         record: dict,
         wall_before: float,
         stop_requested: list[bool],
+        rows: list[dict],
     ) -> None:
         self.model, self.settings, self.driver, self.period = model, settings, driver, period
         self.folder, self.record, self.stop_requested = folder, record, stop_requested
         self.wall_before, self.start = wall_before, time.perf_counter()
         self.status, self.message = SUCCESS, f"reached {settings.cycles} cycles"
+        self.columns = table_columns(model, driver)
+        self.watch = Watch(model, settings.runaway_factor, rows)
+        self.runaway: Runaway | None = None
 
     def wall(self) -> float:
         """Wall time of the run, over every session [s]."""
@@ -103,10 +116,12 @@ class LifeRun:
             return point
         update = 0 if settling else point.update + 1
         counts = (update, cycles, point.simulated_cycles + simulated, extra, int(steady))
-        wall = self.wall()
-        row = update_row(model, self.driver, counts, wear, rate, growth, measured, wall)
+        row = update_row(
+            model, self.driver, counts, self.period, wear, rate, growth, measured, self.wall()
+        )
         files.append_update(self.folder, row, profile_rows(model, update, cycles, wear))
-        new = files.Checkpoint(update, cycles, counts[2], wall, final.with_wear(wear))
+        self.watch.record(dict(zip(self.columns, row, strict=True)))
+        new = files.Checkpoint(update, cycles, counts[2], row[-1], final.with_wear(wear))
         files.save_checkpoint(self.folder, new, self.record)
         return new
 
@@ -124,8 +139,8 @@ class LifeRun:
         tuple or None
             The runs (one per cycle), those measured, the wear per cycle [m] (their mean,
             per joint type), and whether it was steady (False after ``max_update_cycles``:
-            then the second half of the runs is measured); None if a run failed or was
-            interrupted.
+            then the second half of the runs is measured); None if a run failed, was
+            interrupted or ran away.
         """
         settings = self.settings
         most = settings.max_update_cycles if settings.extrapolate else settings.measure_cycles
@@ -137,6 +152,8 @@ class LifeRun:
             rates.append(_wear_since(results.final, state))
             runs.append(results)
             state = results.final
+            if self._ran_away(point.cycles, len(runs), results, rates[-1]):
+                return None
             if not settings.extrapolate:
                 continue
             m = settings.measure_cycles
@@ -185,6 +202,19 @@ class LifeRun:
             self.stop(FAILED, f"the run of {span} ended '{outcome.status}': {outcome.message}")
             return None
         return outcome
+
+    def _ran_away(self, before: int, count: int, results: Results, wear: Profiles) -> bool:
+        """Stop if the ``count``-th cycle after ``before`` ran away (``runaway``); True if so.
+
+        ``results``: its run; ``wear``: the depths it wore [m].
+        """
+        found = self.watch.check(before + count, results, wear)
+        if found is None:
+            return False
+        self.runaway = found
+        settings = self.settings
+        self.stop(RUNAWAY, found.message(before, settings.runaway_factor, settings.extrapolate))
+        return True
 
     def _cycles_model(self, count: int) -> Model:
         """The model run for ``count`` cycles (one wear snapshot, at the end)."""

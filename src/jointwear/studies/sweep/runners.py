@@ -1,4 +1,4 @@
-"""Running the cases of a sweep: in this process, in local processes, or on a Dask cluster.
+"""Running the cases of a sweep (or a life run's band): here, in local processes, or on Dask.
 
 Each case runs through :func:`run_case`, which never raises: a failure comes back as an
 outcome with its status and error. The three runners yield ``(task, outcome)`` pairs as cases
@@ -16,7 +16,7 @@ import signal
 import sys
 import threading
 import time
-from collections.abc import Iterator, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
 from concurrent.futures.process import BrokenProcessPool
 from contextlib import suppress
@@ -64,6 +64,9 @@ class CaseTask:
         them before it loads the model (``engine.user_laws.install``). They pickle with
         their compiled functions (numba pickles a function by value when it was defined in
         the script or notebook, by reference when imported from a module).
+    life_options
+        Further keywords of a long-life wear run (``life``): a study's for its cases, or a
+        life run's for its band companions (``studies.life.companions``).
     """
 
     case: str
@@ -78,6 +81,7 @@ class CaseTask:
 
 Outcome = dict  # status, error, wall_s [s], summary (the run's summary.json, or {})
 Stop = list[bool]  # stop[0] becomes True when the sweep should stop (interrupts.stop_requests)
+Tick = Callable[[], None] | None  # called at every poll while cases run (progress of their own)
 
 
 def run_case(task: CaseTask) -> Outcome:
@@ -128,10 +132,10 @@ def _simulate(task: CaseTask) -> dict:
         return results.summary
     from ..life.study import life  # long-life wear runs; imported only when asked for
 
+    options = {"workers": 1, **task.life_options}  # a case's band in series: cases fill the cores
     return life(
-        task.model_path, task.folder, cycles=task.cycles, overrides=task.overrides,
-        **task.life_options,
-    ).summary  # fmt: skip
+        task.model_path, task.folder, cycles=task.cycles, overrides=task.overrides, **options
+    ).summary
 
 
 def read_record(folder: Path) -> dict | None:
@@ -161,9 +165,9 @@ def run_serial(tasks: Sequence[CaseTask], stop: Stop) -> Iterator[tuple[CaseTask
 
 
 def run_local(
-    tasks: Sequence[CaseTask], workers: int, stop: Stop
+    tasks: Sequence[CaseTask], workers: int, stop: Stop, tick: Tick = None
 ) -> Iterator[tuple[CaseTask, Outcome]]:
-    """Run the cases in ``workers`` local processes.
+    """Run the cases in ``workers`` local processes; ``tick()`` at every poll while they run.
 
     Workers ignore SIGINT and SIGTERM except while they simulate, so that a Ctrl-C at the
     terminal (which reaches every process of the group) stops their runs cleanly; on a stop
@@ -185,11 +189,15 @@ def run_local(
         max_workers=workers, mp_context=context, initializer=_start_worker, initargs=(pids,)
     )
     running: dict[Future, CaseTask] = {pool.submit(run_case, task): task for task in tasks}
-    return _collect(pool, running, pids, stop)
+    return _collect(pool, running, pids, stop, tick)
 
 
 def _collect(
-    pool: ProcessPoolExecutor, running: dict[Future, CaseTask], pids: object, stop: Stop
+    pool: ProcessPoolExecutor,
+    running: dict[Future, CaseTask],
+    pids: object,
+    stop: Stop,
+    tick: Tick,
 ) -> Iterator[tuple[CaseTask, Outcome]]:
     """The outcomes of ``run_local``'s cases as they finish; the pool is shut down at the end."""
     with pool:
@@ -197,6 +205,8 @@ def _collect(
         stopping = broken = False
         while running:
             done, _ = wait(running, timeout=POLL_S, return_when=FIRST_COMPLETED)
+            if tick is not None:
+                tick()
             for future in done:
                 task = running.pop(future)
                 if future.cancelled():
@@ -257,13 +267,14 @@ def _result(future: Future) -> Outcome:
 
 
 def run_dask(
-    tasks: Sequence[CaseTask], address: str, stop: Stop
+    tasks: Sequence[CaseTask], address: str, stop: Stop, tick: Tick = None
 ) -> Iterator[tuple[CaseTask, Outcome]]:
-    """Run the cases on the Dask distributed cluster whose scheduler is at ``address``.
+    """Run the cases on the Dask cluster whose scheduler is at ``address``; ``tick`` as local.
 
     The workers must see the model file and the sweep folder at the same paths (a shared
     file system). On a stop request the cases not yet finished are cancelled; cases already
-    running on a worker finish there, and a later run of the sweep skips them.
+    running on a worker finish there, and a later run of the sweep skips them. The cases are
+    submitted at this call; their outcomes come as the returned iterator is read.
 
     Raises
     ------
@@ -284,13 +295,20 @@ def run_dask(
             ]
         ) from None
     stamp = time.time_ns()  # a later run of the sweep submits new tasks, not cached ones
+    futures = {
+        client.submit(run_case, task, key=f"jointwear-{task.case}-{stamp}"): task for task in tasks
+    }
+    return _collect_dask(client, futures, as_completed(futures, loop=client.loop), stop, tick)
+
+
+def _collect_dask(
+    client: object, futures: dict, finished: object, stop: Stop, tick: Tick
+) -> Iterator[tuple[CaseTask, Outcome]]:
+    """The outcomes of ``run_dask``'s cases as they finish; the client is closed at the end."""
     with client:
-        futures = {
-            client.submit(run_case, task, key=f"jointwear-{task.case}-{stamp}"): task
-            for task in tasks
-        }
-        finished = as_completed(futures, loop=client.loop)
         while not finished.is_empty():
+            if tick is not None:
+                tick()
             if stop[0]:
                 client.cancel([f for f in futures if not f.done()])
                 return
