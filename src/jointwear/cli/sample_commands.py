@@ -24,6 +24,7 @@ from .common import (
     print_table,
 )
 from .progress import SweepProgress
+from .study_commands import print_tally
 
 DEFAULT_METHOD, DEFAULT_SEED = "lhs", 1  # studies.sample.study.sample's, not imported: light
 
@@ -158,11 +159,7 @@ def _print_results(results: object, out_dir: Path) -> None:
 
     table, stats, sensitivity = results.table, results.statistics, results.sensitivity
     failed = len(results.failed)
-    skipped = f" ({len(results.skipped)} finished before)" if results.skipped else ""
-    tally = f"{len(table) - failed} success" + (f", {failed} not" if failed else "")
-    out.print(f"{len(table)} cases{skipped}: {tally}", **PLAIN)
-    for _, row in table[table["status"] != "success"].head(10).iterrows():
-        out.print(f"{row['case']}: {row['status']}: {row['error']}", **PLAIN)
+    print_tally(table, results.skipped, results.failed)
     shown = key_outputs(stats)
     if shown:
         grid = Table("output", "n", "mean", "95 % interval", "P5", "P95", "95 % interval",
@@ -186,11 +183,12 @@ def _print_results(results: object, out_dir: Path) -> None:
 
 def _strongest(sensitivity: object, column: str) -> str:
     """The input with the largest effect on ``column``: its name and measure."""
+    from ..figures.sample import input_labels
+
     rows = sensitivity[sensitivity["output"] == column]
     if not len(rows):
         return "-"
-    if "ST" in rows:
-        top = rows.loc[rows["ST"].idxmax()]
-        return f"{top['input'].rpartition('.')[2]} (ST {top['ST']:.2f})"
-    top = rows.loc[rows["rho"].abs().idxmax()]
-    return f"{top['input'].rpartition('.')[2]} (rho {top['rho']:+.2f})"
+    names = input_labels(sorted(set(sensitivity["input"])))
+    measure = "ST" if "ST" in rows else "rho"
+    top = rows.loc[rows[measure].abs().idxmax()]
+    return f"{names[top['input']]} ({measure} {top[measure]:+.2f})"

@@ -66,7 +66,6 @@ def sweep(
     OUT gets cases/<case>/ (a results folder per case), sweep.csv and sweep.parquet (one row
     per case) and figures/. Running the same sweep again skips the cases already finished.
     """
-    from ..engine.status import SUCCESS
     from ..model import ModelError
     from ..studies.sweep.cases import make_plan
     from ..studies.sweep.study import sweep as run_sweep
@@ -100,19 +99,27 @@ def sweep(
         raise typer.Exit(code=3) from None
     finally:
         bar.close()
-    table = results.table
-    counts = table["status"].value_counts(sort=False)  # in the order the cases come
-    order = sorted(counts.index, key=lambda status: status != SUCCESS)
-    tally = ", ".join(f"{counts[status]} {status}" for status in order)
-    skipped = f" ({len(results.skipped)} finished before)" if results.skipped else ""
-    out.print(f"{len(table)} cases{skipped}: {tally}", soft_wrap=True, highlight=False)
-    for _, row in table[table["status"] != SUCCESS].iterrows():
-        out.print(f"{row['case']}: {row['status']}: {row['error']}", **PLAIN)
+    print_tally(results.table, results.skipped, results.failed)
     out.print(f"table in {out_dir / 'sweep.csv'} and sweep.parquet", **PLAIN)
     if results.interrupted:
         err.print("interrupted: the table holds the cases finished so far", soft_wrap=True)
     if results.failed:
         raise typer.Exit(code=1)
+
+
+def print_tally(table: object, skipped: list[str], failed: list[str], shown: int = 20) -> None:
+    """A study's cases by status, then the first ``shown`` cases that are not complete."""
+    from ..engine.status import SUCCESS
+
+    counts = table["status"].value_counts(sort=False)  # in the order the cases come
+    order = sorted(counts.index, key=lambda status: status != SUCCESS)
+    tally = ", ".join(f"{counts[status]} {status}" for status in order)
+    before = f" ({len(skipped)} finished before)" if skipped else ""
+    out.print(f"{len(table)} cases{before}: {tally}", soft_wrap=True, highlight=False)
+    for _, row in table[table["case"].isin(failed[:shown])].iterrows():
+        out.print(f"{row['case']}: {row['status']}: {row['error']}", **PLAIN)
+    if len(failed) > shown:
+        out.print(f"... and {len(failed) - shown} more not complete (the table's error)", **PLAIN)
 
 
 def life(

@@ -6,13 +6,14 @@ run's ``summary.json``. A run's status is the name of the kernels' ``Status`` co
 ``constraint_drift``, ``energy_drift``, ``lock_up``);
 a sweep case adds ``error`` and ``not_run``, a life run ``failed``, ``worn_through``,
 ``clearance_limit`` and ``runaway``. Everything but ``success`` means the work did not get to
-its end.
+its end; a study counts a life run stopped at a joint's limit as complete (``COMPLETE``).
 """
 
 from ..kernels.codes import Status
 
 __all__ = [
     "CLEARANCE_LIMIT",
+    "COMPLETE",
     "ERROR",
     "FAILED",
     "INTERRUPTED",
@@ -42,6 +43,9 @@ FAILED = "failed"  # one of its simulated runs did not succeed
 WORN_THROUGH = "worn_through"  # a journal would be worn through its radius
 CLEARANCE_LIMIT = "clearance_limit"  # a clearance would grow past max_growth
 RUNAWAY = "runaway"  # a joint's force or wear jumped, or it left its contact law's range
+# A study's case whose results are whole: a run that reached its end, or a life run that
+# stopped at a limit of its joint. A study keeps it, counts it and does not run it again.
+COMPLETE = (SUCCESS, CLEARANCE_LIMIT, WORN_THROUGH)
 
 _MESSAGES = {
     Status.RUNNING: "stopped between chunks",

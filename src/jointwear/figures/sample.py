@@ -198,7 +198,7 @@ def plot_scatter(
     figure = Figure(figsize=(2.6 * len(inputs), 2.2 * len(outputs)), layout="constrained")
     axes = figure.subplots(len(outputs), len(inputs), squeeze=False)
     rho = sensitivity.set_index(["output", "input"])["rho"] if "rho" in sensitivity else None
-    labels = _labels(inputs)
+    labels = input_labels(inputs)
     for i, column in enumerate(outputs):
         y = pd.to_numeric(table[column], errors="coerce").to_numpy(dtype=float)
         label, factor = quantity(column, float(np.nanmax(np.abs(y), initial=0.0)))
@@ -217,7 +217,7 @@ def plot_scatter(
     return figure
 
 
-def _labels(inputs: Sequence[str]) -> dict[str, str]:
+def input_labels(inputs: Sequence[str]) -> dict[str, str]:
     """Each input's path without the words every such path has (``joints``, ``clearance``).
 
     ``joints.crank_coupler.clearance.journal_radius`` -> "crank_coupler journal_radius";
@@ -244,7 +244,7 @@ def plot_sensitivity(sensitivity: pd.DataFrame, outputs: Sequence[str]) -> Figur
     axes = list(figure.subplots(down, across, squeeze=False).ravel())
     for ax in axes[len(shown) :]:
         ax.set_visible(False)
-    names = _labels(sorted(set(sensitivity["input"])))
+    names = input_labels(sorted(set(sensitivity["input"])))
     measure = "ST" if sobol else "rho"
     for number, (ax, column) in enumerate(zip(axes, shown, strict=False)):
         rows = sensitivity[sensitivity["output"] == column]

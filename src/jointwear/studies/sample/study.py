@@ -15,7 +15,10 @@ engine's ``cases/``, ``sample.csv``, ``sample.parquet`` and ``sample.json``:
 The outputs are the run's per-joint and per-driver figures (``coupler_follower.
 max_contact_force_n``, ``motor.torque_range_n_m``; for life runs the cycles and hours to
 50 % clearance growth). A case that fails has no outputs: it is left out of the statistics,
-which the table's ``status`` column and the summary's count of failures then qualify.
+which the table's ``status`` column and the summary's count of failures then qualify; so is
+one that stopped early (its figures up to the failure are no outcome). A life run that stopped
+at a joint's limit (``clearance_limit``, ``worn_through``) is complete: its milestones are
+reached.
 """
 
 from __future__ import annotations
@@ -31,7 +34,7 @@ import numpy as np
 import pandas as pd
 
 from ...engine.interrupts import stop_requests
-from ...engine.status import SUCCESS
+from ...engine.status import COMPLETE
 from ...io import write_atomic
 from ...model import Model, ModelError
 from ..life.settings import LifeSettings
@@ -66,8 +69,8 @@ class SampleResults:
 
     @property
     def failed(self) -> list[str]:
-        """The cases that did not end with status success (including those not run)."""
-        return self.table.loc[self.table["status"] != SUCCESS, "case"].tolist()
+        """The cases not complete (``COMPLETE``: a life run at a joint's limit is), or not run."""
+        return self.table.loc[~self.table["status"].isin(COMPLETE), "case"].tolist()
 
 
 def sample(
@@ -263,11 +266,13 @@ def analyse(
 ) -> tuple[pd.DataFrame, pd.DataFrame]:
     """``statistics.csv`` and ``sensitivity.csv`` of a sampled study's table (written)."""
     results = outputs(table, inputs)
-    stats = statistics(table[table[BASE]], results, confidence=confidence)
+    whole = table.copy()  # an incomplete case's figures (up to a failure) are no outcome
+    whole.loc[~whole["status"].isin(COMPLETE), results] = np.nan
+    stats = statistics(whole[whole[BASE]], results, confidence=confidence)
     if method == "saltelli":
-        sensitivity = sobol_indices(table, inputs, results, confidence=confidence)
+        sensitivity = sobol_indices(whole, inputs, results, confidence=confidence)
     else:
-        sensitivity = rank_correlations(table, inputs, results, confidence=confidence)
+        sensitivity = rank_correlations(whole, inputs, results, confidence=confidence)
     for name, frame in (("statistics.csv", stats), ("sensitivity.csv", sensitivity)):
         write_atomic(folder / name, lambda p, f=frame: f.to_csv(p, index=False, float_format=G12))
     return stats, sensitivity

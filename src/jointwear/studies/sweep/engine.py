@@ -27,7 +27,7 @@ from pathlib import Path
 import pandas as pd
 
 from ...engine.interrupts import stop_requests
-from ...engine.status import NOT_RUN, SUCCESS
+from ...engine.status import COMPLETE, NOT_RUN
 from ...io import check_folder, claim, make_folder, write_atomic, write_text
 from ...model import Model, ModelError, load_model
 from ...model.files import SAVED_MODEL
@@ -219,14 +219,14 @@ def _task(
 
 
 def _finished(folder: Path, record: dict) -> bool:
-    """Whether the case folder holds a successful run with the same settings."""
+    """Whether the case folder holds a complete run (``COMPLETE``) with the same settings."""
     done = read_record(folder)
-    if done is None or done.get("status") != SUCCESS:
+    if done is None or done.get("status") not in COMPLETE:
         return False
     if any(done.get(key, {}) != record[key] for key in ("kind", "cycles", "model", "life_options")):
         return False
     try:
-        return json.loads((folder / "summary.json").read_text()).get("status") == SUCCESS
+        return json.loads((folder / "summary.json").read_text()).get("status") in COMPLETE
     except (OSError, ValueError, AttributeError):
         return False
 

@@ -18,7 +18,7 @@ from pathlib import Path
 import pandas as pd
 
 from ...engine.interrupts import stop_requests
-from ...engine.status import SUCCESS
+from ...engine.status import COMPLETE
 from ...model import Model, ModelError
 from ...model.files import SAVED_MODEL
 from .cases import Case, check_link, check_vary, make_cases, value_text
@@ -39,8 +39,8 @@ class SweepResults:
 
     @property
     def failed(self) -> list[str]:
-        """The cases that did not end with status success (including those not run)."""
-        return self.table.loc[self.table["status"] != SUCCESS, "case"].tolist()
+        """The cases not complete (``COMPLETE``: a life run at a joint's limit is), or not run."""
+        return self.table.loc[~self.table["status"].isin(COMPLETE), "case"].tolist()
 
 
 def sweep(
