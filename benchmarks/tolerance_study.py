@@ -21,8 +21,9 @@ from pathlib import Path
 
 import pandas as pd
 
-from jointwear.figures.sample import key_outputs
+from jointwear.figures.sample import key_outputs, owner
 from jointwear.figures.sweep import quantity
+from jointwear.studies.sample.sensitivity import strength
 
 
 def _input(path: str) -> str:
@@ -49,10 +50,10 @@ def main() -> None:
         row = stats.loc[output]
         label, factor = quantity(output, abs(float(row["p95"])))
         v = {key: f"{row[key] * factor:.4g}" for key in row.index if key != "n"}
-        print(f"| {output.partition('.')[0]}: {label} | {v['mean']} ({v['mean_low']} to "
+        print(f"| {owner(output)}: {label} | {v['mean']} ({v['mean_low']} to "
               f"{v['mean_high']}) | {v['std']} | {v['p5']} | {v['p50']} | {v['p95']} "
               f"({v['p95_low']} to {v['p95_high']}) |")  # fmt: skip
-    measure = "ST" if "ST" in sensitivity else "rho"
+    measure = strength(sensitivity)
     print(f"\n| output | inputs that move it most ({measure}, 95 % interval) |")
     print("|---|---|")
     for output in shown:
@@ -61,7 +62,7 @@ def main() -> None:
         top = [f"{_input(r['input'])} {r[measure]:+.2f} ({r[f'{measure}_low']:+.2f} to "
                f"{r[f'{measure}_high']:+.2f})" for _, r in rows.head(3).iterrows()]  # fmt: skip
         label = quantity(output)[0].rpartition(" [")[0]
-        print(f"| {output.partition('.')[0]}: {label} | {'; '.join(top)} |")
+        print(f"| {owner(output)}: {label} | {'; '.join(top)} |")
 
 
 if __name__ == "__main__":

@@ -223,6 +223,38 @@ def test_rank_correlations_are_scipys_and_their_intervals_cover_the_true_value()
     assert 0.92 <= covered / 400 <= 0.98
 
 
+def test_partial_rank_correlations_are_those_of_the_residuals_and_see_through_confounding():
+    """PRCC of x_j: the correlation of the ranks of x_j and y, each less its least-squares
+    fit on the other inputs' ranks (Marino et al. 2008), here by numpy's lstsq. y depends on
+    x1 only; x2 follows x1: Spearman's rho credits x2 (0.93), the partial one does not."""
+    from scipy.stats import rankdata
+
+    rng = np.random.default_rng(0)
+    n = 200
+    x1, noise, x3 = rng.random((3, n))
+    x2 = 0.7 * x1 + 0.3 * noise
+    y = np.exp(3 * x1) + 0.05 * rng.normal(size=n)
+    table = pd.DataFrame({"x1": x1, "x2": x2, "x3": x3, "j.y": y})
+    found = rank_correlations(table, ["x1", "x2", "x3"], ["j.y"]).set_index("input")
+    ranks = rankdata(table.to_numpy(), axis=0)
+    for j, name in enumerate(["x1", "x2", "x3"]):
+        others = np.column_stack([np.ones(n), np.delete(ranks[:, :3], j, axis=1)])
+        residual_x = ranks[:, j] - others @ np.linalg.lstsq(others, ranks[:, j], rcond=None)[0]
+        residual_y = ranks[:, 3] - others @ np.linalg.lstsq(others, ranks[:, 3], rcond=None)[0]
+        expected = np.corrcoef(residual_x, residual_y)[0, 1]
+        assert found.loc[name, "prcc"] == pytest.approx(expected, abs=1e-12)
+    assert found.loc["x2", "rho"] > 0.9
+    assert found.loc["x2", "prcc_low"] < 0 < found.loc["x2", "prcc_high"]
+    assert found.loc["x1", "prcc_low"] > 0.99
+
+
+def test_too_few_cases_for_partial_correlations_leave_them_out():
+    rng = np.random.default_rng(1)
+    table = pd.DataFrame(rng.random((6, 4)), columns=["a", "b", "c", "j.y"])
+    found = rank_correlations(table, ["a", "b", "c"], ["j.y"])
+    assert found["rho"].notna().all() and found["prcc"].isna().all()  # 6 cases, 3 inputs
+
+
 # The study end to end ---------------------------------------------------------------------
 
 SLIDER_CRANK = EXAMPLES / "slider_crank_clearance.toml"

@@ -154,7 +154,7 @@ def _first(*values: int | None) -> int:
 
 def _print_results(results: object, out_dir: Path) -> None:
     """The cases' outcome, the key outputs' statistics and what drives each."""
-    from ..figures.sample import key_outputs
+    from ..figures.sample import key_outputs, owner
     from ..figures.sweep import quantity
 
     table, stats, sensitivity = results.table, results.statistics, results.sensitivity
@@ -170,7 +170,7 @@ def _print_results(results: object, out_dir: Path) -> None:
             label, factor = quantity(column, abs(float(row["p95"])))
             value = {key: f"{row[key] * factor:.4g}" for key in rows.columns if key != "n"}
             grid.add_row(
-                escape(f"{column.partition('.')[0]}: {label}"), str(int(row["n"])), value["mean"],
+                escape(f"{owner(column)}: {label}"), str(int(row["n"])), value["mean"],
                 f"{value['mean_low']} to {value['mean_high']}", value["p5"], value["p95"],
                 f"{value['p95_low']} to {value['p95_high']}", _strongest(sensitivity, column),
             )  # fmt: skip
@@ -184,11 +184,12 @@ def _print_results(results: object, out_dir: Path) -> None:
 def _strongest(sensitivity: object, column: str) -> str:
     """The input with the largest effect on ``column``: its name and measure."""
     from ..figures.sample import input_labels
+    from ..studies.sample.sensitivity import strength
 
     rows = sensitivity[sensitivity["output"] == column]
     if not len(rows):
         return "-"
     names = input_labels(sorted(set(sensitivity["input"])))
-    measure = "ST" if "ST" in rows else "rho"
+    measure = strength(sensitivity)
     top = rows.loc[rows[measure].abs().idxmax()]
     return f"{names[top['input']]} ({measure} {top[measure]:+.2f})"

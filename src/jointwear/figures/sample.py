@@ -1,13 +1,13 @@
 """Figures of a sampled study: how the results spread, what drives them, whether n was enough.
 
-Drawn for the key outputs (the forces, the deeper wear of each joint, the drive torque and
-the life a design is judged by, ``KEY_OUTPUTS``) that vary between cases:
+Drawn for the key outputs (the life, the forces, the deeper wear of each joint and the drive
+torque a design is judged by, ``KEY_OUTPUTS``) that vary between cases:
 
 - ``distributions.png``: a histogram of each output, its empirical distribution function
   over it, and P5, P50 and P95 marked with their confidence intervals shaded;
 - ``scatter.png``: each key output against each input, Spearman's rho in the corner;
 - ``sensitivity.png``: per output, each input's Sobol' indices (first order and total) or
-  rank correlation, with their intervals;
+  rank correlations (Spearman's and the partial one), with their intervals;
 - ``convergence.png``: the mean and P95 of the first k cases against k, with the final
   interval: a curve still drifting at the right end says more cases are needed.
 
@@ -27,6 +27,7 @@ import pandas as pd
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
+from ..studies.sample.sensitivity import strength
 from ..studies.sweep.cases import short_keys
 from ..units import unit_of
 from .files import save_png
@@ -34,19 +35,23 @@ from .sweep import quantity
 
 WEAR_DEPTH = r"max_wear_depth_[a-z_]+_m"
 KEY_OUTPUTS = (  # column keys (regular expressions) of the outputs drawn, in this order
+    r"hours_to_clearance_growth_50pct",  # a life run's: the mechanism's, then each joint's
     r"max_contact_force_n",
     WEAR_DEPTH,
-    r"clearance_growth_m",
-    r"hours_to_clearance_growth_50pct",
-    r"cycles_to_clearance_growth_50pct",
     r"torque_range_n_m",
     r"force_range_n",
+    r"clearance_growth_m",
 )
 MAX_OUTPUTS = 12  # key outputs drawn at most (the statistics cover all)
 MAX_INPUTS = 8  # inputs in the scatter figure at most (the most influential)
 PANEL = (3.6, 2.7)  # [in] one panel
 TABLE_WORDS = {"joints", "clearance", "bodies", "drivers", "forces", "function"}  # in labels
 MARKS = {"p5": ("P5", "tab:blue"), "p50": ("P50", "black"), "p95": ("P95", "tab:red")}
+
+
+def owner(column: str) -> str:
+    """The joint or driver an output is of, ``mechanism`` for a life run's own figures."""
+    return column.partition(".")[0] if "." in column else "mechanism"
 
 
 def key_outputs(stats: pd.DataFrame) -> list[str]:
@@ -57,7 +62,7 @@ def key_outputs(stats: pd.DataFrame) -> list[str]:
     spread = stats[(stats["std"] > 0) & (stats["n"] > 1)].set_index("output")["mean"]
     chosen = []
     for key in KEY_OUTPUTS:
-        found = [c for c in spread.index if re.fullmatch(key, c.partition(".")[2])]
+        found = [c for c in spread.index if re.fullmatch(key, c.rpartition(".")[2])]
         if key == WEAR_DEPTH:
             deepest = {}
             for column in found:
@@ -118,7 +123,7 @@ def _values(table: pd.DataFrame, column: str) -> tuple[np.ndarray, str, float]:
 
 
 def _title(ax: Axes, column: str) -> None:
-    ax.set_title(column.partition(".")[0], fontsize=9, loc="left")
+    ax.set_title(owner(column), fontsize=9, loc="left")
 
 
 def plot_distributions(table: pd.DataFrame, outputs: Sequence[str], stats: pd.DataFrame) -> Figure:
@@ -172,8 +177,7 @@ def plot_convergence(table: pd.DataFrame, outputs: Sequence[str], stats: pd.Data
 def _influential(sensitivity: pd.DataFrame, inputs: Sequence[str], outputs: Sequence[str]):
     """The inputs by their largest effect on the drawn outputs, at most ``MAX_INPUTS``."""
     rows = sensitivity[sensitivity["output"].isin(outputs)]
-    measure = rows["ST"] if "ST" in rows else rows["rho"].abs()
-    effect = measure.groupby(rows["input"]).max()
+    effect = rows[strength(sensitivity)].abs().groupby(rows["input"]).max()
     ranked = sorted(inputs, key=lambda name: -effect.get(name, 0.0))
     return ranked[:MAX_INPUTS]
 
@@ -212,7 +216,7 @@ def plot_scatter(
             if i == len(outputs) - 1:
                 ax.set_xlabel(xlabel, fontsize=8)
             if j == 0:
-                ax.set_ylabel(f"{column.partition('.')[0]}\n{label}", fontsize=8)
+                ax.set_ylabel(f"{owner(column)}\n{label}", fontsize=8)
             ax.tick_params(labelsize=7)
     return figure
 
@@ -245,24 +249,28 @@ def plot_sensitivity(sensitivity: pd.DataFrame, outputs: Sequence[str]) -> Figur
     for ax in axes[len(shown) :]:
         ax.set_visible(False)
     names = input_labels(sorted(set(sensitivity["input"])))
-    measure = "ST" if sobol else "rho"
+    measure = strength(sensitivity)
+    if sobol:
+        keys = (("S1", "first order S1", -0.2), ("ST", "total ST", 0.2))
+    elif measure == "prcc":
+        keys = (("rho", "Spearman's ρ", -0.2), ("prcc", "partial (PRCC)", 0.2))
+    else:
+        keys = (("rho", "Spearman's ρ", 0.0),)
     for number, (ax, column) in enumerate(zip(axes, shown, strict=False)):
         rows = sensitivity[sensitivity["output"] == column]
         rows = rows.reindex(rows[measure].abs().sort_values().index)[-MAX_INPUTS:]
         place = np.arange(len(rows))
-        keys = (("S1", "first order S1", -0.2), ("ST", "total ST", 0.2)) if sobol else (
-            ("rho", "Spearman's ρ", 0.0),)  # fmt: skip
         for key, name, shift in keys:
             low = (rows[key] - rows[f"{key}_low"]).clip(lower=0)
             high = (rows[f"{key}_high"] - rows[key]).clip(lower=0)
-            ax.barh(place + shift, rows[key], height=0.4 if sobol else 0.6, label=name,
+            ax.barh(place + shift, rows[key], height=0.6 / len(keys), label=name,
                     xerr=[low, high], capsize=2, error_kw={"linewidth": 0.8})  # fmt: skip
         ax.set_yticks(place, [names[path] for path in rows["input"]], fontsize=7)
         ax.axvline(0, color="0.5", linewidth=0.8)
         ax.set_xlim(-0.05 if sobol else -1.0, 1.05 if sobol else 1.0)
-        ax.set_xlabel("Sobol' index" if sobol else "Spearman's rank correlation ρ", fontsize=8)
-        ax.set_title(f"{column.partition('.')[0]}: {quantity(column)[0]}", fontsize=9, loc="left")
-        if sobol and number == 0:
+        ax.set_xlabel("Sobol' index" if sobol else "rank correlation", fontsize=8)
+        ax.set_title(f"{owner(column)}: {quantity(column)[0]}", fontsize=9, loc="left")
+        if len(keys) > 1 and number == 0:
             ax.legend(fontsize=7, loc="lower right")
     more = sensitivity["input"].nunique() > MAX_INPUTS
     shown_inputs = f" (the {MAX_INPUTS} strongest inputs of each)" if more else ""

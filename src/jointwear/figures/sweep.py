@@ -73,6 +73,12 @@ FIGURES_OF_MERIT = (  # file name, title, a joint's column key (a regular expres
     ("clearance_growth", "clearance growth", r"clearance_growth_m"),
     ("wear_life", "cycles to 50 % clearance growth", r"cycles_to_clearance_growth_50pct"),
 )
+LIFE_KEYS = {  # a life run's milestones: their labels
+    "hours_to_clearance_growth_50pct": "hours to 50 % clearance growth [h]",
+    "cycles_to_clearance_growth_50pct": "cycles to 50 % clearance growth",
+    "hours_reached": "hours reached [h]",
+    "cycles_reached": "cycles reached",
+}
 DISPLAY_UNITS = (  # column suffix (SI), axis unit, factor from SI; the first match counts
     ("_m3", "mm³", 1e9),
     ("_m_per_cycle", "nm/cycle", 1e9),
@@ -292,6 +298,8 @@ def quantity(column: str, largest: float = 0.0) -> tuple[str, float]:
     lengths whose ``largest`` value [m] reaches a millimetre (a sliding distance) in metres.
     """
     key = column.rpartition(".")[2]
+    if key in LIFE_KEYS:
+        return LIFE_KEYS[key], 1.0
     for suffix, unit, factor in DISPLAY_UNITS:
         if key.endswith(suffix):
             if suffix == "_m" and largest >= LONG_LENGTH[0]:

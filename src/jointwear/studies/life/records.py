@@ -222,5 +222,9 @@ def life_summary(
             for surface, (_, place) in deepest_cells(kind, joint, wear[kind.name][k]).items():
                 entry[f"max_wear_{where}_{surface}_{unit}"] = place
         joints[joint.name] = entry
+    halves = [e["cycles_to_clearance_growth_50pct"] for e in joints.values()]
+    first = min((half for half in halves if half is not None), default=None)
+    summary["cycles_to_clearance_growth_50pct"] = first  # the mechanism's: its first joint's
+    summary["hours_to_clearance_growth_50pct"] = hours(first, outcome["period_s"])
     summary["clearance_joints"] = joints
     return summary

@@ -7,11 +7,21 @@ Two measures, one row per (output, input):
   others; their intervals by SALib's bootstrap. ``ST - S1`` large: the input acts through
   its interplay with others. Estimators after Saltelli et al. (2010) (first order) and
   Jansen (1999) (total), as SALib computes them.
-- **Spearman's rank correlation** otherwise (any design): ``rho`` in [-1, 1], whether the
-  output rises or falls with the input, for any monotone relation; its interval by the
-  Fisher transform with the variance ``(1 + rho^2 / 2) / (n - 3)`` of D.G. Bonett and
-  T.A. Wright, "Sample size requirements for estimating Pearson, Kendall and Spearman
-  correlations", Psychometrika 65 (2000) 23-28.
+- **Rank correlations** otherwise (any design), in [-1, 1], whether the output rises or
+  falls with the input, for any monotone relation:
+
+  - Spearman's ``rho``, the correlation of the ranks, with its interval by the Fisher
+    transform and the variance ``(1 + rho^2 / 2) / (n - 3)`` of D.G. Bonett and T.A.
+    Wright, "Sample size requirements for estimating Pearson, Kendall and Spearman
+    correlations", Psychometrika 65 (2000) 23-28;
+  - the partial rank correlation ``prcc``, the same with the other inputs' (linear, on
+    ranks) share taken out of both: S. Marino, I.B. Hogue, C.J. Ray and D.E. Kirschner,
+    "A methodology for performing global uncertainty and sensitivity analysis in systems
+    biology", J. Theor. Biol. 254 (2008) 178-196. Drawn inputs are correlated by chance
+    (by 0.28 between two of the tolerance example's 16 at 128 cases), and rho credits an
+    input with the effect of another it happens to follow; prcc does not. Its interval by
+    the Fisher transform with ``n - 3 - (inputs - 1)`` degrees of freedom; it needs more
+    cases than inputs plus 3.
 
 An input drawn from a list of texts (an integrator's name) has no order: it gets no rank
 correlation, only Sobol' indices.
@@ -27,8 +37,16 @@ import pandas as pd
 from .statistics import CONFIDENCE
 
 SOBOL_COLUMNS = ["output", "input", "S1", "S1_low", "S1_high", "ST", "ST_low", "ST_high"]
-RANK_COLUMNS = ["output", "input", "n", "rho", "rho_low", "rho_high"]
+RANK_COLUMNS = ["output", "input", "n", "rho", "rho_low", "rho_high", "prcc", "prcc_low",
+                "prcc_high"]  # fmt: skip
 EDGE = 1e-15  # a rank correlation of exactly +-1 is taken this far inside, for its interval
+
+
+def strength(sensitivity: pd.DataFrame) -> str:
+    """The column that ranks inputs: ``ST``, else ``prcc`` where it could be had, else ``rho``."""
+    if "ST" in sensitivity:
+        return "ST"
+    return "prcc" if sensitivity.get("prcc", pd.Series()).notna().any() else "rho"
 
 
 def sobol_indices(
@@ -72,27 +90,56 @@ def rank_correlations(
     *,
     confidence: float = CONFIDENCE,
 ) -> pd.DataFrame:
-    """Spearman's rho of every output with every numeric input, with its interval.
+    """Spearman's rho and the partial rank correlation of every output with every input.
 
-    The cases without a finite output are left out of that output's correlations.
+    Numeric inputs that vary only. The cases without a finite output are left out of that
+    output's correlations. ``prcc`` is NaN where the cases are too few for it (``n`` at most
+    the inputs plus 3).
     """
-    from scipy.stats import norm, spearmanr
+    from scipy.stats import norm, rankdata
 
     z = norm.ppf(0.5 + confidence / 2)
-    numeric = [name for name in inputs if pd.api.types.is_numeric_dtype(table[name])]
+    numeric = [
+        name
+        for name in inputs
+        if pd.api.types.is_numeric_dtype(table[name]) and table[name].nunique() > 1
+    ]
     rows = []
     for output in outputs:
         y = pd.to_numeric(table[output], errors="coerce").to_numpy(dtype=float)
         finite = np.isfinite(y)
         n = int(finite.sum())
-        if n < 4 or np.ptp(y[finite]) == 0:
+        if n < 4 or np.ptp(y[finite]) == 0 or not numeric:
             continue
-        for name in numeric:
-            x = table[name].to_numpy(dtype=float)[finite]
-            if np.ptp(x) == 0:
-                continue
-            rho = float(spearmanr(x, y[finite]).statistic)
-            half = z * np.sqrt((1 + rho**2 / 2) / (n - 3))
-            centre = np.arctanh(np.clip(rho, -1 + EDGE, 1 - EDGE))  # |rho| = 1: an edge
-            rows.append([output, name, n, rho, np.tanh(centre - half), np.tanh(centre + half)])
+        ranks = rankdata(
+            np.column_stack([table[numeric].to_numpy(dtype=float)[finite], y[finite]]), axis=0
+        )
+        correlation = np.corrcoef(ranks, rowvar=False)
+        rho = correlation[-1, :-1]
+        partial = _partial(correlation) if n > len(numeric) + 3 else np.full(len(numeric), np.nan)
+        rho_interval = _fisher(rho, z * np.sqrt((1 + rho**2 / 2) / (n - 3)))
+        prcc_interval = _fisher(partial, z / np.sqrt(max(n - 3 - (len(numeric) - 1), 1)))
+        for j, name in enumerate(numeric):
+            rows.append([output, name, n, rho[j], *rho_interval[j], partial[j],
+                         *prcc_interval[j]])  # fmt: skip
     return pd.DataFrame(rows, columns=RANK_COLUMNS)
+
+
+def _partial(correlation: np.ndarray) -> np.ndarray:
+    """The partial correlation of the last variable with each other one, given all the rest.
+
+    From the inverse P of the correlation matrix: -P[i, -1] / sqrt(P[i, i] P[-1, -1]).
+    NaN where the inputs' ranks are linearly dependent (the matrix is singular).
+    """
+    try:
+        inverse = np.linalg.inv(correlation)
+    except np.linalg.LinAlgError:
+        return np.full(len(correlation) - 1, np.nan)
+    diagonal = np.diag(inverse)
+    return np.clip(-inverse[:-1, -1] / np.sqrt(diagonal[:-1] * diagonal[-1]), -1.0, 1.0)
+
+
+def _fisher(values: np.ndarray, half: np.ndarray | float) -> np.ndarray:
+    """Intervals (low, high) of correlations by the Fisher transform: tanh(atanh r -+ half)."""
+    centre = np.arctanh(np.clip(values, -1 + EDGE, 1 - EDGE))  # |r| = 1: at an edge
+    return np.column_stack([np.tanh(centre - half), np.tanh(centre + half)])

@@ -13,8 +13,9 @@ engine's ``cases/``, ``sample.csv``, ``sample.parquet`` and ``sample.json``:
   chart and the running mean and P95 against the number of cases (``figures.sample``).
 
 The outputs are the run's per-joint and per-driver figures (``coupler_follower.
-max_contact_force_n``, ``motor.torque_range_n_m``; for life runs the cycles and hours to
-50 % clearance growth). A case that fails has no outputs: it is left out of the statistics,
+max_contact_force_n``, ``motor.torque_range_n_m``); for life runs also the mechanism's life,
+the cycles and hours until its first joint's clearance has grown by half, and those the run
+reached. A case that fails has no outputs: it is left out of the statistics,
 which the table's ``status`` column and the summary's count of failures then qualify; so is
 one that stopped early (its figures up to the failure are no outcome). A life run that stopped
 at a joint's limit (``clearance_limit``, ``worn_through``) is complete: its milestones are
@@ -51,6 +52,10 @@ BASE = "base"  # the table's column: the case is an independent draw (all but Sa
 NOT_OUTPUTS = re.compile(  # diagnostics, where on a surface, not how much: not outputs
     r".*\.(whole_run|outside_law_ranges|band)\..*|.*_angle_[a-z_]+_deg"
 )
+LIFE_OUTPUTS = (  # a life run's figures of the whole mechanism
+    "hours_to_clearance_growth_50pct", "cycles_to_clearance_growth_50pct", "hours_reached",
+    "cycles_reached",
+)  # fmt: skip
 MIN_CASES = 4  # fewer cases give no interval
 G12 = "%.12g"  # numbers in the CSV tables
 
@@ -252,7 +257,7 @@ def outputs(table: pd.DataFrame, inputs: Sequence[str]) -> list[str]:
     return [
         column
         for column in table.columns
-        if "." in column
+        if ("." in column or column in LIFE_OUTPUTS)
         and column not in inputs
         and column not in FIXED_COLUMNS
         and not NOT_OUTPUTS.fullmatch(column)
