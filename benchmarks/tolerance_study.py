@@ -23,7 +23,7 @@ import pandas as pd
 
 from jointwear.figures.sample import key_outputs, owner
 from jointwear.figures.sweep import quantity
-from jointwear.studies.sample.sensitivity import strength
+from jointwear.studies.sample.sensitivity import effect, strength
 
 
 def _input(path: str) -> str:
@@ -58,7 +58,7 @@ def main() -> None:
     print("|---|---|")
     for output in shown:
         rows = sensitivity[sensitivity["output"] == output]
-        rows = rows.reindex(rows[measure].abs().sort_values(ascending=False).index)
+        rows = rows.reindex(effect(rows).sort_values(ascending=False).index)
         top = [f"{_input(r['input'])} {r[measure]:+.2f} ({r[f'{measure}_low']:+.2f} to "
                f"{r[f'{measure}_high']:+.2f})" for _, r in rows.head(3).iterrows()]  # fmt: skip
         label = quantity(output)[0].rpartition(" [")[0]

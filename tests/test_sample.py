@@ -167,6 +167,7 @@ def test_statistics_leave_out_failed_cases_and_give_no_interval_without_spread()
     table = pd.DataFrame({"j.x": [1.0, np.nan, 3.0, 2.0, np.inf], "j.y": [2.0] * 5})
     rows = statistics(table, ["j.x", "j.y"]).set_index("output")
     assert rows.loc["j.x", "n"] == 3 and rows.loc["j.x", "mean"] == 2.0
+    assert np.isnan(rows.loc["j.x", "mean_low"])  # 3 values: too few for an interval
     assert rows.loc["j.y", "std"] == 0.0 and rows.loc["j.y", "p95_low"] == 2.0
 
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Annotated
 
+import pandas as pd
 import typer
 from rich.markup import escape
 from rich.table import Table
@@ -184,12 +185,12 @@ def _print_results(results: object, out_dir: Path) -> None:
 def _strongest(sensitivity: object, column: str) -> str:
     """The input with the largest effect on ``column``: its name and measure."""
     from ..figures.sample import input_labels
-    from ..studies.sample.sensitivity import strength
+    from ..studies.sample.sensitivity import effect
 
     rows = sensitivity[sensitivity["output"] == column]
-    if not len(rows):
+    if not len(rows) or not effect(rows).any():
         return "-"
     names = input_labels(sorted(set(sensitivity["input"])))
-    measure = strength(sensitivity)
-    top = rows.loc[rows[measure].abs().idxmax()]
+    top = rows.loc[effect(rows).idxmax()]
+    measure = next(key for key in ("ST", "prcc", "rho") if key in top and pd.notna(top[key]))
     return f"{names[top['input']]} ({measure} {top[measure]:+.2f})"

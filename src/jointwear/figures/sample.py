@@ -27,7 +27,7 @@ import pandas as pd
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
-from ..studies.sample.sensitivity import strength
+from ..studies.sample.sensitivity import effect, strength
 from ..studies.sweep.cases import short_keys
 from ..units import unit_of
 from .files import save_png
@@ -63,6 +63,7 @@ def key_outputs(stats: pd.DataFrame) -> list[str]:
     chosen = []
     for key in KEY_OUTPUTS:
         found = [c for c in spread.index if re.fullmatch(key, c.rpartition(".")[2])]
+        found.sort(key=lambda column: "." in column)  # the mechanism's before its joints'
         if key == WEAR_DEPTH:
             deepest = {}
             for column in found:
@@ -177,8 +178,8 @@ def plot_convergence(table: pd.DataFrame, outputs: Sequence[str], stats: pd.Data
 def _influential(sensitivity: pd.DataFrame, inputs: Sequence[str], outputs: Sequence[str]):
     """The inputs by their largest effect on the drawn outputs, at most ``MAX_INPUTS``."""
     rows = sensitivity[sensitivity["output"].isin(outputs)]
-    effect = rows[strength(sensitivity)].abs().groupby(rows["input"]).max()
-    ranked = sorted(inputs, key=lambda name: -effect.get(name, 0.0))
+    largest = effect(rows).groupby(rows["input"]).max()
+    ranked = sorted(inputs, key=lambda name: -largest.get(name, 0.0))
     return ranked[:MAX_INPUTS]
 
 
@@ -258,7 +259,7 @@ def plot_sensitivity(sensitivity: pd.DataFrame, outputs: Sequence[str]) -> Figur
         keys = (("rho", "Spearman's ρ", 0.0),)
     for number, (ax, column) in enumerate(zip(axes, shown, strict=False)):
         rows = sensitivity[sensitivity["output"] == column]
-        rows = rows.reindex(rows[measure].abs().sort_values().index)[-MAX_INPUTS:]
+        rows = rows.reindex(effect(rows).sort_values().index)[-MAX_INPUTS:]
         place = np.arange(len(rows))
         for key, name, shift in keys:
             low = (rows[key] - rows[f"{key}_low"]).clip(lower=0)

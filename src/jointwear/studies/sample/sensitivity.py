@@ -49,6 +49,16 @@ def strength(sensitivity: pd.DataFrame) -> str:
     return "prcc" if sensitivity.get("prcc", pd.Series()).notna().any() else "rho"
 
 
+def effect(rows: pd.DataFrame) -> pd.Series:
+    """How strongly each row's input moves its output: ``|ST|``, or ``|prcc|`` (``|rho|``).
+
+    ``|rho|`` where the output had too few cases for ``prcc``; 0 where there is neither.
+    """
+    if "ST" in rows:
+        return rows["ST"].abs().fillna(0.0)
+    return rows["prcc"].abs().fillna(rows["rho"].abs()).fillna(0.0)
+
+
 def sobol_indices(
     table: pd.DataFrame,
     inputs: Sequence[str],

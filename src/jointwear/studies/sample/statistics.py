@@ -24,6 +24,7 @@ STATISTICS = {  # name: statistic of a sample along an axis
 }
 CONFIDENCE = 0.95
 RESAMPLES = 2000  # bootstrap resamples: the interval's ends vary by ~1 % of its width
+MIN_CASES = 5  # fewer values than this (that differ) get no interval: NaN
 
 
 def statistics(
@@ -59,13 +60,13 @@ def statistics(
         for name, statistic in STATISTICS.items():
             row[name] = float(statistic(values, None)) if len(values) > 1 else np.nan
             low = high = np.nan
-            if len(values) > 2 and np.ptp(values) > 0:
+            if len(values) >= MIN_CASES and np.ptp(values) > 0:
                 interval = bootstrap(
                     (values,), statistic, confidence_level=confidence, n_resamples=resamples,
                     method="percentile", rng=np.random.default_rng(seed), vectorized=True,
                 ).confidence_interval  # fmt: skip
                 low, high = float(interval.low), float(interval.high)
-            elif len(values) > 1:  # every case alike: no spread to resample
+            elif len(values) > 1 and np.ptp(values) == 0:  # every case alike: no spread
                 low = high = row[name]
             row[f"{name}_low"], row[f"{name}_high"] = low, high
         rows.append(row)
