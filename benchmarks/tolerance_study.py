@@ -23,7 +23,7 @@ import pandas as pd
 
 from jointwear.figures.sample import key_outputs, owner
 from jointwear.figures.sweep import quantity
-from jointwear.studies.sample.sensitivity import effect, strength
+from jointwear.studies.sample.sensitivity import effect
 
 
 def _input(path: str) -> str:
@@ -40,8 +40,8 @@ def main() -> None:
     table = pd.read_csv(folder / "sample.csv")
     stats = pd.read_csv(folder / "statistics.csv").set_index("output")
     sensitivity = pd.read_csv(folder / "sensitivity.csv")
-    failed = (table["status"] != "success").sum()
-    print(f"{len(table)} cases ({plan['method']}, seed {plan['seed']}), {failed} not success; "
+    statuses = ", ".join(f"{n} {status}" for status, n in table["status"].value_counts().items())
+    print(f"{len(table)} cases ({plan['method']}, seed {plan['seed']}): {statuses}; "
           f"wall {table['wall_s'].sum():.0f} s summed over cases\n")  # fmt: skip
     print("| output | mean (95 % interval) | sd | P5 | P50 | P95 (95 % interval) |")
     print("|---|---|---|---|---|---|")
@@ -53,16 +53,22 @@ def main() -> None:
         print(f"| {owner(output)}: {label} | {v['mean']} ({v['mean_low']} to "
               f"{v['mean_high']}) | {v['std']} | {v['p5']} | {v['p50']} | {v['p95']} "
               f"({v['p95_low']} to {v['p95_high']}) |")  # fmt: skip
-    measure = strength(sensitivity)
-    print(f"\n| output | inputs that move it most ({measure}, 95 % interval) |")
+    print(
+        "\n| output | inputs that move it most (prcc, or rho where too few cases; 95 % interval) |"
+    )
     print("|---|---|")
     for output in shown:
         rows = sensitivity[sensitivity["output"] == output]
         rows = rows.reindex(effect(rows).sort_values(ascending=False).index)
-        top = [f"{_input(r['input'])} {r[measure]:+.2f} ({r[f'{measure}_low']:+.2f} to "
-               f"{r[f'{measure}_high']:+.2f})" for _, r in rows.head(3).iterrows()]  # fmt: skip
+        top = [_effect_text(row) for _, row in rows.head(3).iterrows()]
         label = quantity(output)[0].rpartition(" [")[0]
-        print(f"| {owner(output)}: {label} | {'; '.join(top)} |")
+        print(f"| {owner(output)}: {label} | {'; '.join(top) or '-'} |")
+
+
+def _effect_text(row: pd.Series) -> str:
+    key = next(k for k in ("ST", "prcc", "rho") if k in row and pd.notna(row[k]))
+    return (f"{_input(row['input'])} {key} {row[key]:+.2f} ({row[f'{key}_low']:+.2f} to "
+            f"{row[f'{key}_high']:+.2f})")  # fmt: skip
 
 
 if __name__ == "__main__":
