@@ -43,16 +43,18 @@ def main() -> None:
     statuses = ", ".join(f"{n} {status}" for status, n in table["status"].value_counts().items())
     print(f"{len(table)} cases ({plan['method']}, seed {plan['seed']}): {statuses}; "
           f"wall {table['wall_s'].sum():.0f} s summed over cases\n")  # fmt: skip
-    print("| output | mean (95 % interval) | sd | P5 | P50 | P95 (95 % interval) |")
-    print("|---|---|---|---|---|---|")
+    print("| output | n | mean (95 % interval) | sd | P5 | P50 | P95 (95 % interval) |")
+    print("|---|---|---|---|---|---|---|")
     shown = key_outputs(stats.reset_index())
     for output in shown:
         row = stats.loc[output]
         label, factor = quantity(output, abs(float(row["p95"])))
-        v = {key: f"{row[key] * factor:.4g}" for key in row.index if key != "n"}
-        print(f"| {owner(output)}: {label} | {v['mean']} ({v['mean_low']} to "
-              f"{v['mean_high']}) | {v['std']} | {v['p5']} | {v['p50']} | {v['p95']} "
-              f"({v['p95_low']} to {v['p95_high']}) |")  # fmt: skip
+        v = {key: f"{row[key] * factor:.4g}" for key in row.index[2:]}
+        n = f"{row['n']:.0f}" + ("" if row["n"] == row["cases"] else f"/{row['cases']:.0f}")
+        print(
+            f"| {owner(output)}: {label} | {n} | {v['mean']} {_interval(v, 'mean')} | "
+            f"{v['std']} | {v['p5']} | {v['p50']} | {v['p95']} {_interval(v, 'p95')} |"
+        )
     print(
         "\n| output | inputs that move it most (prcc, or rho where too few cases; 95 % interval) |"
     )
@@ -65,10 +67,16 @@ def main() -> None:
         print(f"| {owner(output)}: {label} | {'; '.join(top) or '-'} |")
 
 
+def _interval(values: dict[str, str], key: str) -> str:
+    low, high = values[f"{key}_low"], values[f"{key}_high"]
+    return "(too few cases)" if low == "nan" else f"({low} to {high})"
+
+
 def _effect_text(row: pd.Series) -> str:
     key = next(k for k in ("ST", "prcc", "rho") if k in row and pd.notna(row[k]))
-    return (f"{_input(row['input'])} {key} {row[key]:+.2f} ({row[f'{key}_low']:+.2f} to "
-            f"{row[f'{key}_high']:+.2f})")  # fmt: skip
+    low, high = row[f"{key}_low"], row[f"{key}_high"]
+    interval = "no interval" if pd.isna(low) else f"{low:+.2f} to {high:+.2f}"
+    return f"{_input(row['input'])} {key} {row[key]:+.2f} ({interval})"
 
 
 if __name__ == "__main__":

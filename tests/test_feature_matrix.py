@@ -5,7 +5,7 @@ type and every joint kind (ideal, revolute clearance dry and lubricated, transla
 clearance, several clearance joints). The paths: ``check``; ``run`` with figures and the
 animation; ``plot`` on the folder; ``export`` to ``.nc`` and ``.mat``; the Python API
 (``run``, ``load_results``, ``Results.export``); a two-case ``sweep`` with figures; a
-four-case ``sample`` with its statistics and figures; a two-cycle ``life`` run. Each cell
+five-case ``sample`` with its statistics and figures; a two-cycle ``life`` run. Each cell
 either succeeds, or fails with exit code 2 and a message naming what is not supported; never
 an escaped exception (exit code 70 from the executable), never a hang
 (``pytest.mark.timeout`` bounds each cell).
@@ -391,18 +391,18 @@ def test_sweep_of_two_cases_with_figures(folders, name):
 
 
 @pytest.mark.parametrize("name", MODELS)
-def test_sample_of_four_cases_with_statistics(folders, name):
+def test_sample_of_five_cases_with_statistics(folders, name):
     path = model_file(folders, name)
     body = jw.load_model(path).bodies[-1]
     out = folders["root"] / "samples" / name
     mass = f"uniform({body.mass}, {1.5 * body.mass})"
-    cli("sample", path, "--out", out, "--workers", 1, "--n", 4, "--method", "random",
+    cli("sample", path, "--out", out, "--workers", 1, "--n", 5, "--method", "random",
         "--dist", f"bodies.{body.name}.mass={mass}")  # fmt: skip
     table = pd.read_csv(out / "sample.csv")
     assert (table["status"] == "success").all(), table["error"].tolist()
     assert table[f"bodies.{body.name}.mass"].between(body.mass, 1.5 * body.mass).all()
     stats = pd.read_csv(out / "statistics.csv")
-    assert (stats["n"] == 4).all()
+    assert (stats["n"] == 5).all()
     assert (stats["p5"] <= stats["p95"]).all()
     if name not in CLEARANCE_FREE:  # the clearance joints' forces are drawn
         assert {"distributions.png", "convergence.png"} <= set(_pngs(out / "figures"))

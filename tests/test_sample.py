@@ -310,7 +310,7 @@ def test_running_the_study_again_skips_its_cases_and_redraws(study):
 def test_the_command_line_prints_the_key_outputs_and_refuses_bad_input(tmp_path):
     study_file = tmp_path / "study.toml"
     study_file.write_text(
-        f'n = 4\nmethod = "random"\n[distributions]\n"{FRICTION}" = "uniform(0.05, 0.15)"\n'
+        f'n = 5\nmethod = "random"\n[distributions]\n"{FRICTION}" = "uniform(0.05, 0.15)"\n'
         f'[set]\n"solver.t_end" = 0.004\n'
     )
     out = tmp_path / "cli"
@@ -318,9 +318,9 @@ def test_the_command_line_prints_the_key_outputs_and_refuses_bad_input(tmp_path)
                                       str(study_file), "--workers", "1"],
                                 env={"COLUMNS": "200"})  # fmt: skip
     assert result.exit_code == 0, result.output
-    assert "4 cases: 4 success" in result.output
+    assert "5 cases: 5 success" in result.output
     assert "rod_slider: max contact force [kN]" in result.output
-    assert len(pd.read_csv(out / "sample.csv")) == 4
+    assert len(pd.read_csv(out / "sample.csv")) == 5
 
     options = ["--n", "4", "--method", "saltelli", "--dist", f"{FRICTION}=gauss(1, 2)"]
     bad = CliRunner().invoke(app, ["sample", str(SLIDER_CRANK), "--out", str(tmp_path / "x"),
@@ -333,23 +333,71 @@ def test_the_command_line_prints_the_key_outputs_and_refuses_bad_input(tmp_path)
 
 
 def test_study_options_are_checked_before_anything_runs(tmp_path):
-    base = {"distributions": {FRICTION: "uniform(0.05, 0.15)"}, "n": 4}
+    base = {"distributions": {FRICTION: "uniform(0.05, 0.15)"}, "n": 5}
     cases = [
         ({"method": "grid"}, "--method: got 'grid'"),
         ({"n": 1}, "--n: got 1"),
         ({"n": 4000, "method": "saltelli"}, "saltelli runs n x 3 cases"),
+        ({"seed": 0.0}, "--seed: got 0.0"),
+        ({"seed": True}, "--seed: got True"),
         ({"correlations": {(FRICTION, RADIUS): 0.5}, "method": "saltelli"}, "independent"),
         ({"overrides": [f"{FRICTION}=0.1"]}, "both set"),
         ({"max_change": "1%"}, "only for life runs"),
         ({"distributions": {}}, "nothing is drawn"),
-        ({"distributions": {"joints.rod_slider.clearance.bearing_radius": "uniform(1 mm, 2 mm)"}},
-         "case001"),
+        ({"distributions": {RADIUS: "uniform(1 mm, 2 mm)"}}, "case case001 (and 4 other cases)"),
+        ({"cycles": 2, "overrides": ["drivers.motor.function.speed=0"]}, "periodic driver"),
     ]  # fmt: skip
     for change, says in cases:
         with pytest.raises(ModelError) as caught:
             jw.sample(SLIDER_CRANK, tmp_path / "never", **{**base, **change})
         assert any(says in line for line in caught.value.problems), (change, caught.value)
     assert not (tmp_path / "never").exists()
+
+
+def test_numpy_integers_are_whole_numbers(tmp_path):
+    results = jw.sample(SLIDER_CRANK, tmp_path / "np", distributions={FRICTION: "[0.05, 0.1]"},
+                        n=np.int64(5), seed=np.int64(2), overrides=SHORT, workers=1,
+                        figures=False)  # fmt: skip
+    assert len(results.table) == 5
+    assert json.loads((tmp_path / "np" / "sample.json").read_text())["seed"] == 2
+
+
+def test_incomplete_cases_are_left_out_and_saltelli_base_rows_are_in_the_table(tmp_path):
+    """A case that stops at its step limit has figures only up to there: they are in the
+    table, but not in the statistics or the figures. Saltelli's base rows are marked."""
+    out = tmp_path / "mixed"
+    distributions = {"solver.max_steps": "[30, 100000]", FRICTION: "uniform(0.05, 0.15)"}
+    results = jw.sample(SLIDER_CRANK, out, distributions=distributions, n=4, method="saltelli",
+                        overrides=SHORT, workers=1)  # fmt: skip
+    table = pd.read_csv(out / "sample.csv")
+    assert len(table) == 16 and table["base"].sum() == 8
+    complete = table[table["base"] & (table["status"] == "success")]
+    stopped = table["status"] == "max_steps"
+    assert stopped.any() and len(complete) < 8
+    force = "rod_slider.max_contact_force_n"
+    assert table.loc[stopped, force].notna().all()  # their figures up to the stop ...
+    row = results.statistics.set_index("output").loc[force]
+    assert row["cases"] == row["n"] == len(complete)  # ... are not outcomes
+    assert row["mean"] == pytest.approx(complete[force].mean(), rel=1e-12)
+    assert force not in set(results.sensitivity["output"])  # Sobol' needs every case
+    assert set(results.failed) == set(table.loc[stopped, "case"])
+
+
+def test_a_perfect_rank_order_has_no_interval():
+    table = pd.DataFrame({"x": [1.0, 2.0, 3.0, 4.0, 5.0], "j.y": [2.0, 4.0, 5.0, 7.0, 9.0]})
+    row = rank_correlations(table, ["x"], ["j.y"]).iloc[0]
+    assert row["rho"] == pytest.approx(1.0, abs=1e-15)
+    assert np.isnan(row["rho_low"]) and np.isnan(row["rho_high"])
+
+
+def test_a_study_file_of_the_wrong_types_is_refused_key_by_key(tmp_path):
+    path = tmp_path / "study.toml"
+    path.write_text('correlations = 5\nset = 5\ndistributions = "x"\nn = true\n')
+    with pytest.raises(ModelError) as caught:
+        make_sample_plan([], path)
+    assert [line.split(": ")[1] for line in caught.value.problems] == [
+        "distributions", "set", "correlations", "n"
+    ]  # fmt: skip
 
 
 def test_a_study_file_and_options_merge(tmp_path):

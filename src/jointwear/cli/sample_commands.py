@@ -155,11 +155,11 @@ def _first(*values: int | None) -> int:
 
 def _print_results(results: object, out_dir: Path) -> None:
     """The cases' outcome, the key outputs' statistics and what drives each."""
+    from ..engine.status import NOT_RUN
     from ..figures.sample import key_outputs, owner
     from ..figures.sweep import quantity
 
     table, stats, sensitivity = results.table, results.statistics, results.sensitivity
-    failed = len(results.failed)
     print_tally(table, results.skipped, results.failed)
     shown = key_outputs(stats)
     if shown:
@@ -169,17 +169,44 @@ def _print_results(results: object, out_dir: Path) -> None:
         for column in shown:
             row = rows.loc[column]
             label, factor = quantity(column, abs(float(row["p95"])))
-            value = {key: f"{row[key] * factor:.4g}" for key in rows.columns if key != "n"}
+            value = {key: _number(row[key] * factor) for key in rows.columns[2:]}
             grid.add_row(
-                escape(f"{owner(column)}: {label}"), str(int(row["n"])), value["mean"],
+                escape(f"{owner(column)}: {label}"), _count(row), value["mean"],
                 f"{value['mean_low']} to {value['mean_high']}", value["p5"], value["p95"],
                 f"{value['p95_low']} to {value['p95_high']}", _strongest(sensitivity, column),
             )  # fmt: skip
         print_table(keep_whole(grid, 1, 2, 4, 5))
-    failures = f"; {failed} failed cases are left out of the statistics" if failed else ""
-    out.print(
-        f"tables in {out_dir}: sample.csv, statistics.csv, sensitivity.csv{failures}", **PLAIN
-    )
+        for column in shown:
+            row = rows.loc[column]
+            if row["n"] < row["cases"]:
+                out.print(
+                    f"{owner(column)}: {quantity(column)[0]}: not reached in "
+                    f"{int(row['cases'] - row['n'])} of {int(row['cases'])} cases (the run "
+                    "ended first); its statistics are of the cases that reached it",
+                    **PLAIN,
+                )  # fmt: skip
+    elif len(table):
+        out.print("no outputs to describe: the model has no clearance joint or driver", **PLAIN)
+    not_run = int((table["status"] == NOT_RUN).sum())
+    failed = len(results.failed) - not_run
+    notes = [f"{count} {what}" for count, what in ((failed, "incomplete"), (not_run, "not run"))
+             if count]  # fmt: skip
+    left_out = f"; {' and '.join(notes)} cases left out of the statistics" if notes else ""
+    out.print(f"tables in {out_dir}: sample.csv, statistics.csv, sensitivity.csv{left_out}",
+              **PLAIN)  # fmt: skip
+    if "ST" in sensitivity and notes:
+        out.print("Sobol' indices need every case of the design: outputs of the cases left "
+                  "out have none", **PLAIN)  # fmt: skip
+
+
+def _count(row: pd.Series) -> str:
+    """``n``, or ``n/cases`` where some cases have no value."""
+    n, cases = int(row["n"]), int(row["cases"])
+    return str(n) if n == cases else f"{n}/{cases}"
+
+
+def _number(value: float) -> str:
+    return "-" if pd.isna(value) else f"{value:.4g}"
 
 
 def _strongest(sensitivity: object, column: str) -> str:

@@ -19,6 +19,7 @@ __all__ = [
     "INTERRUPTED",
     "NOT_RUN",
     "RUNAWAY",
+    "SETTLED",
     "SUCCESS",
     "WORN_THROUGH",
     "Status",
@@ -46,6 +47,9 @@ RUNAWAY = "runaway"  # a joint's force or wear jumped, or it left its contact la
 # A study's case whose results are whole: a run that reached its end, or a life run that
 # stopped at a limit of its joint. A study keeps it, counts it and does not run it again.
 COMPLETE = (SUCCESS, CLEARANCE_LIMIT, WORN_THROUGH)
+# A case that would end alike if run again: complete, or a life run that ran away (whose
+# results, up to the run-away, no study counts). A study does not run it again.
+SETTLED = (*COMPLETE, RUNAWAY)
 
 _MESSAGES = {
     Status.RUNNING: "stopped between chunks",

@@ -27,6 +27,7 @@ import pandas as pd
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
+from ..studies.sample.design import BASE
 from ..studies.sample.sensitivity import effect, strength
 from ..studies.sweep.cases import short_keys
 from ..units import unit_of
@@ -91,7 +92,7 @@ def save_sample_figures(
     if not drawn:
         return []
     rows = stats.set_index("output")
-    base = table[table["base"]] if "base" in table else table
+    base = table[table[BASE]] if BASE in table else table
     written = [
         save_png(plot_distributions(base, drawn, rows), folder / "distributions.png"),
         save_png(plot_convergence(base, drawn, rows), folder / "convergence.png"),

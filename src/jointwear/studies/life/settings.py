@@ -12,6 +12,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+import numpy as np
+
 from ...model import Model, ModelError
 from ...model.functions import period
 from ...units import to_si
@@ -41,12 +43,12 @@ class LifeSettings:
         lines = []
         for name, least in (("cycles", 1), ("settle_cycles", 0), ("measure_cycles", 1)):
             value = getattr(self, name)
-            if not _whole(value, least) or value > MAX_CYCLES:
+            if not whole(value, least) or value > MAX_CYCLES:
                 lines.append(
                     f"{name}: {value!r} is not a whole number from {least} to {MAX_CYCLES:.0e}"
                 )
-        least = 2 * self.measure_cycles if _whole(self.measure_cycles, 1) else 2
-        if not _whole(self.max_update_cycles, least):
+        least = 2 * self.measure_cycles if whole(self.measure_cycles, 1) else 2
+        if not whole(self.max_update_cycles, least):
             lines.append(
                 f"max_update_cycles: {self.max_update_cycles!r} is not a whole number >= {least}"
                 " (twice measure_cycles: two groups of them are compared)"
@@ -100,8 +102,9 @@ def _number(value: object) -> bool:
     return isinstance(value, int | float) and not isinstance(value, bool)
 
 
-def _whole(value: object, least: int) -> bool:
-    return isinstance(value, int) and not isinstance(value, bool) and value >= least
+def whole(value: object, least: int = 1) -> bool:
+    """Whether ``value`` is a whole number (a Python or numpy integer, not a bool) >= least."""
+    return isinstance(value, int | np.integer) and not isinstance(value, bool) and value >= least
 
 
 def cycle_driver(model: Model) -> tuple[str, float]:

@@ -62,7 +62,14 @@ from .band import BAND, band_summary, band_table, folder_name
 from .band import FOLDER as BAND_FOLDER
 from .companions import Band, Companion, companion, local_processes
 from .records import figure_options, life_summary, profile_columns, table_columns
-from .settings import MAX_CYCLES, RUNAWAY_FACTOR, LifeSettings, cycle_driver, with_feedback
+from .settings import (
+    MAX_CYCLES,
+    RUNAWAY_FACTOR,
+    LifeSettings,
+    cycle_driver,
+    whole,
+    with_feedback,
+)
 from .update import RESUME, LifeRun
 
 LifeProgress = Callable[[int, int], None]  # (cycles done, cycles asked for)
@@ -209,21 +216,10 @@ def life(
         model = with_feedback(load_model(model_path, overrides), feedback)
     except ModelError as error:
         raise ModelError(problems + error.problems) from None
-    try:
-        driver, period = cycle_driver(model)
-    except ModelError as error:
-        problems += error.problems
-    joints = [(kind, joint) for kind, _, joint in joints_by_kind(model)]
-    if not joints:
-        problems.append("joints: a life run needs a clearance joint ([joints.clearance])")
-    problems += [
-        f"joints.{joint.name}: life runs do not support {kind.name} clearance joints yet; "
-        "run it with `jointwear run`"
-        for kind, joint in joints
-        if not kind.life_runs
-    ]
+    problems += model_problems(model)
     if problems:
         raise ModelError(problems)
+    driver, period = cycle_driver(model)
     folder = Path(out)
     record = {"settings": asdict(settings), "model": model.model_dump(mode="json")}
     columns = (table_columns(model, driver), profile_columns(model))
@@ -313,11 +309,32 @@ def life(
     return LifeResults(table, profiles, summary, point.state)
 
 
+def model_problems(model: Model) -> list[str]:
+    """What keeps ``model`` from a life run: no periodic driver, no clearance joint that can.
+
+    One line each; none if it can run.
+    """
+    problems = []
+    try:
+        cycle_driver(model)
+    except ModelError as error:
+        problems += error.problems
+    joints = [(kind, joint) for kind, _, joint in joints_by_kind(model)]
+    if not joints:
+        problems.append("joints: a life run needs a clearance joint ([joints.clearance])")
+    problems += [
+        f"joints.{joint.name}: life runs do not support {kind.name} clearance joints yet; "
+        "run it with `jointwear run`"
+        for kind, joint in joints
+        if not kind.life_runs
+    ]
+    return problems
+
+
 def _runner_problems(workers: int | None, scheduler: str | None) -> list[str]:
     """What is wrong with where the band's runs are to run (``workers``, ``scheduler``)."""
     problems = []
-    whole = isinstance(workers, int) and not isinstance(workers, bool)
-    if workers is not None and not (whole and 1 <= workers <= MAX_CYCLES):
+    if workers is not None and not (whole(workers) and workers <= MAX_CYCLES):
         problems.append(f"workers: got {workers!r}; expected a whole number from 1")
     if workers is not None and scheduler is not None:
         problems.append(

@@ -29,6 +29,7 @@ from numpy.typing import NDArray
 from ...model import ModelError
 
 METHODS = ("random", "lhs", "sobol", "saltelli")
+BASE = "base"  # a study table's column: the case is an independent draw (unit_points)
 
 
 def unit_points(

@@ -27,6 +27,7 @@ from ...model.errors import ModelError, did_you_mean
 from ..sweep.cases import read_toml_file, table_leaves, value_text
 
 STUDY_FILE_KEYS = ("n", "method", "seed", "correlations", "distributions", "set")
+KIND_NAMES = {dict: "a table", list: "an array", int: "a whole number", str: "a string"}
 DIST_EXAMPLE = "joints.crank_rod.clearance.friction_coefficient=normal(0.1, 0.03)"
 
 
@@ -119,22 +120,31 @@ def read_study_file(path: str | os.PathLike) -> SamplePlan:
         for key in data
         if key not in STUDY_FILE_KEYS
     ]
+    kinds = {"distributions": dict, "set": dict, "correlations": list, "n": int, "seed": int,
+             "method": str}  # fmt: skip
+    for key, kind in kinds.items():
+        value = data.get(key)
+        if value is not None and (not isinstance(value, kind) or isinstance(value, bool)):
+            problems.append(f"{path}: {key}: got {value!r}; expected {KIND_NAMES[kind]}")
+    if problems:
+        raise ModelError(problems)
     distributions = dict(table_leaves(data.get("distributions", {}), stop_at_lists=True))
     overrides = [f"{dotted}={value_text(v)}" for dotted, v in table_leaves(data.get("set", {}))]
     correlations = {}
     for entry in data.get("correlations", []):
-        if not (isinstance(entry, list) and len(entry) == 3 and isinstance(entry[2], float | int)
+        if not (isinstance(entry, list) and len(entry) == 3 and _number(entry[2])
                 and all(isinstance(p, str) for p in entry[:2])):  # fmt: skip
             problems.append(f"{path}: correlations: {entry!r}; expected [path, path, rho]")
         else:
             correlations[(entry[0], entry[1])] = float(entry[2])
     settings = {key: data.get(key) for key in ("n", "method", "seed")}
-    for key, kind in (("n", int), ("method", str), ("seed", int)):
-        if settings[key] is not None and not isinstance(settings[key], kind):
-            problems.append(f"{path}: {key}: got {settings[key]!r}; expected a {kind.__name__}")
     if problems:
         raise ModelError(problems)
     return SamplePlan(distributions, correlations, overrides, **settings)
+
+
+def _number(value: object) -> bool:
+    return isinstance(value, int | float) and not isinstance(value, bool)
 
 
 def make_sample_plan(

@@ -37,9 +37,9 @@ import pandas as pd
 from .statistics import CONFIDENCE
 
 SOBOL_COLUMNS = ["output", "input", "S1", "S1_low", "S1_high", "ST", "ST_low", "ST_high"]
+PERFECT = 1 - 1e-12  # a correlation this close to +-1 is perfect (1 but for rounding)
 RANK_COLUMNS = ["output", "input", "n", "rho", "rho_low", "rho_high", "prcc", "prcc_low",
                 "prcc_high"]  # fmt: skip
-EDGE = 1e-15  # a rank correlation of exactly +-1 is taken this far inside, for its interval
 
 
 def strength(sensitivity: pd.DataFrame) -> str:
@@ -150,6 +150,11 @@ def _partial(correlation: np.ndarray) -> np.ndarray:
 
 
 def _fisher(values: np.ndarray, half: np.ndarray | float) -> np.ndarray:
-    """Intervals (low, high) of correlations by the Fisher transform: tanh(atanh r -+ half)."""
-    centre = np.arctanh(np.clip(values, -1 + EDGE, 1 - EDGE))  # |r| = 1: at an edge
+    """Intervals (low, high) of correlations by the Fisher transform: tanh(atanh r -+ half).
+
+    None (NaN) at |r| = 1, where the transform has no spread to give: a perfect rank order,
+    which a few cases show by chance as readily as a law does.
+    """
+    with np.errstate(divide="ignore", invalid="ignore"):
+        centre = np.where(np.abs(values) < PERFECT, np.arctanh(values), np.nan)
     return np.column_stack([np.tanh(centre - half), np.tanh(centre + half)])

@@ -1,6 +1,8 @@
 """The statistics of a sampled study's outputs, each with a bootstrap confidence interval.
 
-Per output: the cases it has a finite value in (``n``), the mean, the standard deviation
+Per output: the cases described (``cases``), those it has a finite value in (``n``: fewer
+where a life run's milestone was not reached, and the statistics are of those that reached
+it), the mean, the standard deviation
 (``ddof = 1``) and the 5th, 50th and 95th percentiles (numpy's linear interpolation between
 order statistics). Each comes with the interval that holds it at ``confidence`` by the
 percentile bootstrap (``scipy.stats.bootstrap``): what another draw of as many cases might
@@ -35,7 +37,7 @@ def statistics(
     resamples: int = RESAMPLES,
     seed: int = 0,
 ) -> pd.DataFrame:
-    """One row per output: ``n``, and each statistic with its ``_low`` and ``_high`` ends.
+    """One row per output: ``cases``, ``n`` (with a value), each statistic and its interval.
 
     Parameters
     ----------
@@ -56,7 +58,7 @@ def statistics(
     for output in outputs:
         values = pd.to_numeric(table[output], errors="coerce").to_numpy(dtype=float)
         values = values[np.isfinite(values)]
-        row: dict[str, object] = {"output": output, "n": len(values)}
+        row: dict[str, object] = {"output": output, "cases": len(table), "n": len(values)}
         for name, statistic in STATISTICS.items():
             row[name] = float(statistic(values, None)) if len(values) > 1 else np.nan
             low = high = np.nan
@@ -70,7 +72,9 @@ def statistics(
                 low = high = row[name]
             row[f"{name}_low"], row[f"{name}_high"] = low, high
         rows.append(row)
-    columns = ["output", "n"] + [f"{s}{end}" for s in STATISTICS for end in ("", "_low", "_high")]
+    columns = ["output", "cases", "n"] + [
+        f"{s}{end}" for s in STATISTICS for end in ("", "_low", "_high")
+    ]
     return pd.DataFrame(rows, columns=columns)
 
 

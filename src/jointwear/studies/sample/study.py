@@ -38,25 +38,29 @@ from ...engine.interrupts import stop_requests
 from ...engine.status import COMPLETE
 from ...io import write_atomic
 from ...model import Model, ModelError
-from ..life.settings import LifeSettings
+from ..life.settings import LifeSettings, whole
 from ..sweep.cases import MAX_CASES, indexed_cases
-from ..sweep.engine import FIXED_COLUMNS, StudyProgress, check_run_options, run_study
-from .design import METHODS, correlation_matrix, unit_points
+from ..sweep.engine import (
+    FIXED_COLUMNS,
+    StudyProgress,
+    check_run_options,
+    incomplete,
+    run_study,
+)
+from .design import BASE, METHODS, correlation_matrix, unit_points
 from .distributions import Distribution, read_distribution
 from .plan import DIST_EXAMPLE
 from .sensitivity import rank_correlations, sobol_indices
-from .statistics import CONFIDENCE, statistics
+from .statistics import CONFIDENCE, MIN_CASES, statistics
 
 FIGURES = "figures"
-BASE = "base"  # the table's column: the case is an independent draw (all but Saltelli's mixes)
-NOT_OUTPUTS = re.compile(  # diagnostics, where on a surface, not how much: not outputs
-    r".*\.(whole_run|outside_law_ranges|band)\..*|.*_angle_[a-z_]+_deg"
+NOT_OUTPUTS = re.compile(  # diagnostics, and where on a surface (not how much): not outputs
+    r".*\.(whole_run|outside_law_ranges|band)\..*|.*_wear_(angle|position)_[a-z_]+_(deg|m)"
 )
 LIFE_OUTPUTS = (  # a life run's figures of the whole mechanism
     "hours_to_clearance_growth_50pct", "cycles_to_clearance_growth_50pct", "hours_reached",
     "cycles_reached",
 )  # fmt: skip
-MIN_CASES = 4  # fewer cases give no interval
 G12 = "%.12g"  # numbers in the CSV tables
 
 
@@ -74,8 +78,8 @@ class SampleResults:
 
     @property
     def failed(self) -> list[str]:
-        """The cases not complete (``COMPLETE``: a life run at a joint's limit is), or not run."""
-        return self.table.loc[~self.table["status"].isin(COMPLETE), "case"].tolist()
+        """The cases not complete (a life run at a joint's limit is), or not run."""
+        return incomplete(self.table)
 
 
 def sample(
@@ -143,6 +147,7 @@ def sample(
     inputs = _distributions(distributions)
     paths = [d.path for d in inputs]
     _check(inputs, n, method, seed, correlations, overrides, confidence)
+    n, seed = int(n), int(seed)  # also numpy's integers, which JSON does not write
     problems = check_run_options(cycles, scheduler, workers) + _max_change_problems(
         max_change, cycles
     )
@@ -165,10 +170,9 @@ def sample(
         model_path, out, cases, kind="sample", record=record, overrides=overrides,
         cycles=cycles, scheduler=scheduler, workers=workers, progress=progress,
         also_writes=("statistics.csv", "sensitivity.csv", f"{FIGURES}/"),
-        life_options=_life_options(max_change),
+        life_options=_life_options(max_change), columns={BASE: base.tolist()},
     )  # fmt: skip
     table = done.table
-    table.insert(1 + len(paths), BASE, base)
     with stop_requests():
         stats, sensitivity = analyse(table, paths, method, confidence, done.folder)
         drawn = draw(done.folder, table, paths, stats, sensitivity) if figures else []
@@ -223,13 +227,13 @@ def _check(
     if method not in METHODS:
         problems.append(f"--method: got {method!r}; expected one of {', '.join(METHODS)}")
     per_point = len(inputs) + 2 if method == "saltelli" else 1
-    if not (_whole(n) and MIN_CASES <= n * per_point <= MAX_CASES):
+    if not (whole(n) and MIN_CASES <= n * per_point <= MAX_CASES):
         low = -(-MIN_CASES // per_point)
         problems.append(
             f"--n: got {n!r}; expected a whole number from {low} to {MAX_CASES // per_point:,}"
             + (f" (saltelli runs n x {per_point} cases)" if per_point > 1 else "")
         )
-    if not (_whole(seed) or seed == 0):
+    if not whole(seed, 0):
         problems.append(f"--seed: got {seed!r}; expected a whole number from 0")
     if correlations and method == "saltelli":
         problems.append(
@@ -248,10 +252,6 @@ def _check(
         raise ModelError(problems)
 
 
-def _whole(value: object) -> bool:
-    return isinstance(value, int | np.integer) and not isinstance(value, bool) and value >= 1
-
-
 def outputs(table: pd.DataFrame, inputs: Sequence[str]) -> list[str]:
     """The table's result columns: per joint and driver, numeric, not diagnostics, given."""
     return [
@@ -266,14 +266,25 @@ def outputs(table: pd.DataFrame, inputs: Sequence[str]) -> list[str]:
     ]
 
 
+def outcomes(table: pd.DataFrame, inputs: Sequence[str]) -> pd.DataFrame:
+    """The table with the outputs of incomplete cases blanked (NaN).
+
+    A case that failed or stopped early (a run-away) has figures only up to there: no
+    outcome of its inputs, for the statistics, the sensitivities or the figures.
+    """
+    whole = table.copy()
+    whole.loc[~whole["status"].isin(COMPLETE), outputs(table, inputs)] = np.nan
+    return whole
+
+
 def analyse(
     table: pd.DataFrame, inputs: Sequence[str], method: str, confidence: float, folder: Path
 ) -> tuple[pd.DataFrame, pd.DataFrame]:
     """``statistics.csv`` and ``sensitivity.csv`` of a sampled study's table (written)."""
     results = outputs(table, inputs)
-    whole = table.copy()  # an incomplete case's figures (up to a failure) are no outcome
-    whole.loc[~whole["status"].isin(COMPLETE), results] = np.nan
-    stats = statistics(whole[whole[BASE]], results, confidence=confidence)
+    whole = outcomes(table, inputs)
+    complete = whole[whole[BASE] & whole["status"].isin(COMPLETE)]
+    stats = statistics(complete, results, confidence=confidence)
     if method == "saltelli":
         sensitivity = sobol_indices(whole, inputs, results, confidence=confidence)
     else:
@@ -290,12 +301,13 @@ def draw(
     stats: pd.DataFrame,
     sensitivity: pd.DataFrame,
 ) -> list[Path]:
-    """The study's figures into ``folder/figures``."""
+    """The study's figures into ``folder/figures``, of its complete cases."""
     from ...figures.sample import save_sample_figures  # matplotlib only when drawing
 
     plan = json.loads((folder / "sample.json").read_text())
     units = {path: entry["unit"] for path, entry in plan["distributions"].items()}
-    return save_sample_figures(table, inputs, units, stats, sensitivity, folder / FIGURES)
+    whole = outcomes(table, inputs)
+    return save_sample_figures(whole, inputs, units, stats, sensitivity, folder / FIGURES)
 
 
 def redraw_sample_figures(folder: str | os.PathLike) -> list[Path]:

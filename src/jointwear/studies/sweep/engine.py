@@ -20,6 +20,7 @@ from __future__ import annotations
 import json
 import math
 import os
+import re
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -27,12 +28,12 @@ from pathlib import Path
 import pandas as pd
 
 from ...engine.interrupts import stop_requests
-from ...engine.status import COMPLETE, NOT_RUN
+from ...engine.status import COMPLETE, NOT_RUN, SETTLED
 from ...io import check_folder, claim, make_folder, write_atomic, write_text
 from ...model import Model, ModelError, load_model
 from ...model.files import SAVED_MODEL
 from ...model.laws.user import used_laws
-from ..life.settings import MAX_CYCLES
+from ..life.settings import MAX_CYCLES, whole
 from .cases import Case, si_value
 from .runners import CaseTask, Outcome, read_record, run_dask, run_local, run_serial
 
@@ -55,6 +56,11 @@ class CaseReport:
 StudyProgress = Callable[[CaseReport | None, int, int], None]
 
 
+def incomplete(table: pd.DataFrame) -> list[str]:
+    """The cases of a study's table not complete (``COMPLETE``), or not run."""
+    return table.loc[~table["status"].isin(COMPLETE), "case"].tolist()
+
+
 @dataclass(frozen=True)
 class StudyRun:
     """What ``run_study`` did: the table, the cases' models and what happened."""
@@ -70,7 +76,7 @@ def check_run_options(cycles: int | None, scheduler: str | None, workers: int | 
     """The problems of a study's ``cycles``, ``scheduler`` and ``workers``, one line each."""
     problems = []
     for option, value in (("--cycles", cycles), ("--workers", workers)):
-        if value is not None and not (_whole(value) and value <= MAX_CYCLES):
+        if value is not None and not (whole(value) and value <= MAX_CYCLES):
             problems.append(
                 f"{option}: got {value!r}; expected a whole number from 1 to {MAX_CYCLES:.0e}"
             )
@@ -96,6 +102,7 @@ def run_study(
     progress: StudyProgress | None = None,
     also_writes: Sequence[str] = (),
     life_options: Mapping[str, object] | None = None,
+    columns: Mapping[str, Sequence[object]] | None = None,
 ) -> StudyRun:
     """Run ``cases`` of a model into the study folder ``out`` (module docstring).
 
@@ -114,6 +121,8 @@ def run_study(
         Further files and folders (``figures/``) the study writes into ``out``.
     life_options
         Keyword arguments of ``jointwear.life`` for every case (with ``cycles``).
+    columns
+        Further columns of the table, a value per case, after the varied values.
 
     Raises
     ------
@@ -121,7 +130,7 @@ def run_study(
         Before anything runs, if any case's model is invalid (one line per problem, naming
         the case), or if the scheduler cannot be reached.
     """
-    models = _load_cases(model_path, overrides, cases)
+    models = _load_cases(model_path, overrides, cases, life=cycles is not None)
     folder = Path(out).resolve()
     check_folder(folder)
     tables = (f"{kind}.json", f"{kind}.csv", f"{kind}.parquet")
@@ -158,34 +167,51 @@ def run_study(
             _report(progress, task.case, outcome, len(outcomes), len(tasks), skipped=False)
         interrupted = stop[0]
 
-    table = _table(cases, models, outcomes)
+    table = _table(cases, models, outcomes, columns or {})
     with stop_requests():  # a second Ctrl-C must not leave half a table
         write_table(table, folder / tables[1], folder / tables[2])
     return StudyRun(folder, table, models, skipped, interrupted)
 
 
 def _load_cases(
-    model_path: str | os.PathLike | Model, overrides: Sequence[str], cases: Sequence[Case]
+    model_path: str | os.PathLike | Model,
+    overrides: Sequence[str],
+    cases: Sequence[Case],
+    life: bool,
 ) -> dict[str, Model]:
-    """Validate every case's model; report each problem once, naming its case."""
+    """Validate every case's model (for a life run too, with ``life``).
+
+    A problem that many cases share but for its numbers (a drawn value out of range) is
+    told once, for the first case, with the count of the others.
+    """
+    from ..life.study import model_problems
+
     models: dict[str, Model] = {}
-    problems: dict[str, list[str]] = {}  # problem -> the cases that have it
+    problems: dict[str, list[tuple[str, str]]] = {}  # problem's form -> (case, its line)
     for case in cases:
         try:
             models[case.id] = load_model(model_path, [*overrides, *case.overrides])
+            lines = model_problems(models[case.id]) if life else []
         except ModelError as error:
-            for line in error.problems:
-                problems.setdefault(line, []).append(case.id)
+            lines = error.problems
+        for line in lines:
+            problems.setdefault(_NUMBERS.sub("#", line), []).append((case.id, line))
     if problems:
-        raise ModelError([_naming(line, names, len(cases)) for line, names in problems.items()])
+        raise ModelError([_naming(found, len(cases)) for found in problems.values()])
     return models
 
 
-def _naming(line: str, names: list[str], total: int) -> str:
-    if len(names) == total > 1:
+_NUMBERS = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")  # a problem's form
+
+
+def _naming(found: list[tuple[str, str]], total: int) -> str:
+    """A problem of the cases ``found`` (case, line): its first line, naming the case."""
+    first, line = found[0]
+    if len(found) == total > 1 and all(text == line for _, text in found):
         return line  # not about any one case
-    more = f" (and {len(names) - 1} other case{'s' * (len(names) > 2)})" if len(names) > 1 else ""
-    return f"case {names[0]}{more}: {line}"
+    others = len(found) - 1
+    more = f" (and {others} other case{'s' * (others > 1)})" if others else ""
+    return f"case {first}{more}: {line}"
 
 
 def _task(
@@ -219,14 +245,14 @@ def _task(
 
 
 def _finished(folder: Path, record: dict) -> bool:
-    """Whether the case folder holds a complete run (``COMPLETE``) with the same settings."""
+    """Whether the case folder holds a run with these settings that would end alike again."""
     done = read_record(folder)
-    if done is None or done.get("status") not in COMPLETE:
+    if done is None or done.get("status") not in SETTLED:
         return False
     if any(done.get(key, {}) != record[key] for key in ("kind", "cycles", "model", "life_options")):
         return False
     try:
-        return json.loads((folder / "summary.json").read_text()).get("status") in COMPLETE
+        return json.loads((folder / "summary.json").read_text()).get("status") in SETTLED
     except (OSError, ValueError, AttributeError):
         return False
 
@@ -255,13 +281,17 @@ def _report(
 
 
 def _table(
-    cases: Sequence[Case], models: Mapping[str, Model], outcomes: Mapping[str, Outcome]
+    cases: Sequence[Case],
+    models: Mapping[str, Model],
+    outcomes: Mapping[str, Outcome],
+    columns: Mapping[str, Sequence[object]],
 ) -> pd.DataFrame:
     rows = []
-    for case in cases:
+    for index, case in enumerate(cases):
         row: dict[str, object] = {"case": case.id}
         for path, text in case.values.items():
             row[path] = si_value(models[case.id], path, text)
+        row |= {name: values[index] for name, values in columns.items()}
         outcome = outcomes.get(case.id) or {
             "status": NOT_RUN,
             "error": "the study stopped before this case ran",
@@ -302,10 +332,6 @@ def _flat(values: Mapping, prefix: str) -> dict[str, float]:
         elif value is None or _is_number(value):
             columns[f"{prefix}.{key}"] = math.nan if value is None else value
     return columns
-
-
-def _whole(value: object) -> bool:
-    return isinstance(value, int) and not isinstance(value, bool) and value >= 1
 
 
 def _is_number(value: object) -> bool:

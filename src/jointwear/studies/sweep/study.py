@@ -18,11 +18,10 @@ from pathlib import Path
 import pandas as pd
 
 from ...engine.interrupts import stop_requests
-from ...engine.status import COMPLETE
 from ...model import Model, ModelError
 from ...model.files import SAVED_MODEL
 from .cases import Case, check_link, check_vary, make_cases, value_text
-from .engine import CASES_FOLDER, StudyProgress, check_run_options, run_study
+from .engine import CASES_FOLDER, StudyProgress, check_run_options, incomplete, run_study
 
 FIGURES = "figures"
 
@@ -39,8 +38,8 @@ class SweepResults:
 
     @property
     def failed(self) -> list[str]:
-        """The cases not complete (``COMPLETE``: a life run at a joint's limit is), or not run."""
-        return self.table.loc[~self.table["status"].isin(COMPLETE), "case"].tolist()
+        """The cases not complete (a life run at a joint's limit is), or not run."""
+        return incomplete(self.table)
 
 
 def sweep(
