@@ -23,7 +23,6 @@ import pandas as pd
 
 from jointwear.figures.sample import key_outputs, owner
 from jointwear.figures.sweep import quantity
-from jointwear.studies.sample.sensitivity import effect
 
 
 def _input(path: str) -> str:
@@ -61,7 +60,7 @@ def main() -> None:
     print("|---|---|")
     for output in shown:
         rows = sensitivity[sensitivity["output"] == output]
-        rows = rows.reindex(effect(rows).sort_values(ascending=False).index)
+        rows = rows.sort_values("effect", ascending=False)
         top = [_effect_text(row) for _, row in rows.head(3).iterrows()]
         label = quantity(output)[0].rpartition(" [")[0]
         print(f"| {owner(output)}: {label} | {'; '.join(top) or '-'} |")

@@ -5,7 +5,6 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Annotated
 
-import pandas as pd
 import typer
 from rich.markup import escape
 from rich.table import Table
@@ -199,25 +198,24 @@ def _print_results(results: object, out_dir: Path) -> None:
                   "out have none", **PLAIN)  # fmt: skip
 
 
-def _count(row: pd.Series) -> str:
+def _count(row: object) -> str:
     """``n``, or ``n/cases`` where some cases have no value."""
     n, cases = int(row["n"]), int(row["cases"])
     return str(n) if n == cases else f"{n}/{cases}"
 
 
 def _number(value: float) -> str:
-    return "-" if pd.isna(value) else f"{value:.4g}"
+    return "-" if value != value else f"{value:.4g}"  # NaN: no interval
 
 
 def _strongest(sensitivity: object, column: str) -> str:
     """The input with the largest effect on ``column``: its name and measure."""
-    from ..figures.sample import input_labels
-    from ..studies.sample.sensitivity import effect
+    from ..studies.sample.sensitivity import input_labels
 
     rows = sensitivity[sensitivity["output"] == column]
-    if not len(rows) or not effect(rows).any():
+    if not len(rows) or not rows["effect"].any():
         return "-"
     names = input_labels(sorted(set(sensitivity["input"])))
-    top = rows.loc[effect(rows).idxmax()]
-    measure = next(key for key in ("ST", "prcc", "rho") if key in top and pd.notna(top[key]))
+    top = rows.loc[rows["effect"].idxmax()]
+    measure = next(key for key in ("ST", "prcc", "rho") if key in top and top[key] == top[key])
     return f"{names[top['input']]} ({measure} {top[measure]:+.2f})"

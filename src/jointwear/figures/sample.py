@@ -27,9 +27,6 @@ import pandas as pd
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
-from ..studies.sample.design import BASE
-from ..studies.sample.sensitivity import effect, strength
-from ..studies.sweep.cases import short_keys
 from ..units import unit_of
 from .files import save_png
 from .sweep import quantity
@@ -46,7 +43,6 @@ KEY_OUTPUTS = (  # column keys (regular expressions) of the outputs drawn, in th
 MAX_OUTPUTS = 12  # key outputs drawn at most (the statistics cover all)
 MAX_INPUTS = 8  # inputs in the scatter figure at most (the most influential)
 PANEL = (3.6, 2.7)  # [in] one panel
-TABLE_WORDS = {"joints", "clearance", "bodies", "drivers", "forces", "function"}  # in labels
 MARKS = {"p5": ("P5", "tab:blue"), "p50": ("P50", "black"), "p95": ("P95", "tab:red")}
 
 
@@ -78,7 +74,7 @@ def key_outputs(stats: pd.DataFrame) -> list[str]:
 
 def save_sample_figures(
     table: pd.DataFrame,
-    inputs: Sequence[str],
+    labels: Mapping[str, str],
     units: Mapping[str, str | None],
     stats: pd.DataFrame,
     sensitivity: pd.DataFrame,
@@ -86,23 +82,26 @@ def save_sample_figures(
 ) -> list[Path]:
     """Write the study's figures into ``folder``; return their paths.
 
-    ``units`` gives the unit each input's distribution was given in (None: a plain number).
+    ``table`` holds the cases to draw (a study's independent, complete ones); ``labels``
+    names each input (its dotted path: a short name), ``units`` the unit each input's
+    distribution was given in (None: a plain number); ``sensitivity`` has an ``effect``
+    column that ranks the inputs.
     """
     drawn = key_outputs(stats)
     if not drawn:
         return []
     rows = stats.set_index("output")
-    base = table[table[BASE]] if BASE in table else table
     written = [
-        save_png(plot_distributions(base, drawn, rows), folder / "distributions.png"),
-        save_png(plot_convergence(base, drawn, rows), folder / "convergence.png"),
+        save_png(plot_distributions(table, drawn, rows), folder / "distributions.png"),
+        save_png(plot_convergence(table, drawn, rows), folder / "convergence.png"),
     ]
-    shown = _influential(sensitivity, inputs, drawn)
+    shown = _influential(sensitivity, list(labels), drawn)
     if shown:
-        figure = plot_scatter(base, shown, units, drawn, sensitivity)
+        figure = plot_scatter(table, {p: labels[p] for p in shown}, units, drawn, sensitivity)
         written.append(save_png(figure, folder / "scatter.png"))
     if len(sensitivity):
-        written.append(save_png(plot_sensitivity(sensitivity, drawn), folder / "sensitivity.png"))
+        figure = plot_sensitivity(sensitivity, labels, drawn)
+        written.append(save_png(figure, folder / "sensitivity.png"))
     return written
 
 
@@ -155,8 +154,6 @@ def plot_distributions(table: pd.DataFrame, outputs: Sequence[str], stats: pd.Da
 
 def plot_convergence(table: pd.DataFrame, outputs: Sequence[str], stats: pd.DataFrame) -> Figure:
     """The mean and P95 of the first k cases against k, each with its final interval."""
-    from ..studies.sample.statistics import running
-
     figure, axes = _grid(len(outputs))
     for ax, column in zip(axes, outputs, strict=True):
         values, label, factor = _values(table, column)
@@ -176,10 +173,19 @@ def plot_convergence(table: pd.DataFrame, outputs: Sequence[str], stats: pd.Data
     return figure
 
 
+def running(values: Sequence[float]) -> pd.DataFrame:
+    """The mean and P95 of the first k cases, for k = 1 to n (finite values in case order)."""
+    x = np.asarray(values, dtype=float)
+    x = x[np.isfinite(x)]
+    count = np.arange(1, len(x) + 1)
+    p95 = [np.quantile(x[:k], 0.95) for k in count]
+    return pd.DataFrame({"cases": count, "mean": np.cumsum(x) / count, "p95": p95})
+
+
 def _influential(sensitivity: pd.DataFrame, inputs: Sequence[str], outputs: Sequence[str]):
     """The inputs by their largest effect on the drawn outputs, at most ``MAX_INPUTS``."""
     rows = sensitivity[sensitivity["output"].isin(outputs)]
-    largest = effect(rows).groupby(rows["input"]).max()
+    largest = rows["effect"].groupby(rows["input"]).max()
     ranked = sorted(inputs, key=lambda name: -largest.get(name, 0.0))
     return ranked[:MAX_INPUTS]
 
@@ -195,16 +201,16 @@ def _input_axis(table: pd.DataFrame, path: str, label: str, unit: str | None) ->
 
 def plot_scatter(
     table: pd.DataFrame,
-    inputs: Sequence[str],
+    labels: Mapping[str, str],
     units: Mapping[str, str | None],
     outputs: Sequence[str],
     sensitivity: pd.DataFrame,
 ) -> Figure:
-    """Each output (rows) against each input (columns), with its rank correlation."""
+    """Each output (rows) against each input (columns, ``labels``), with its rank correlation."""
+    inputs = list(labels)
     figure = Figure(figsize=(2.6 * len(inputs), 2.2 * len(outputs)), layout="constrained")
     axes = figure.subplots(len(outputs), len(inputs), squeeze=False)
     rho = sensitivity.set_index(["output", "input"])["rho"] if "rho" in sensitivity else None
-    labels = input_labels(inputs)
     for i, column in enumerate(outputs):
         y = pd.to_numeric(table[column], errors="coerce").to_numpy(dtype=float)
         label, factor = quantity(column, float(np.nanmax(np.abs(y), initial=0.0)))
@@ -223,20 +229,9 @@ def plot_scatter(
     return figure
 
 
-def input_labels(inputs: Sequence[str]) -> dict[str, str]:
-    """Each input's path without the words every such path has (``joints``, ``clearance``).
-
-    ``joints.crank_coupler.clearance.journal_radius`` -> "crank_coupler journal_radius";
-    the shortest distinct trailing parts where that would confuse two inputs.
-    """
-    labels = {path: " ".join(p for p in path.split(".") if p not in TABLE_WORDS) or path
-              for path in inputs}  # fmt: skip
-    if len(set(labels.values())) < len(labels):
-        return short_keys(list(inputs))
-    return labels
-
-
-def plot_sensitivity(sensitivity: pd.DataFrame, outputs: Sequence[str]) -> Figure:
+def plot_sensitivity(
+    sensitivity: pd.DataFrame, labels: Mapping[str, str], outputs: Sequence[str]
+) -> Figure:
     """Per output, a bar per input: Sobol' S1 and ST, or Spearman's rho, with intervals.
 
     The ``MAX_INPUTS`` strongest inputs of each output, the strongest on top.
@@ -250,24 +245,22 @@ def plot_sensitivity(sensitivity: pd.DataFrame, outputs: Sequence[str]) -> Figur
     axes = list(figure.subplots(down, across, squeeze=False).ravel())
     for ax in axes[len(shown) :]:
         ax.set_visible(False)
-    names = input_labels(sorted(set(sensitivity["input"])))
-    measure = strength(sensitivity)
     if sobol:
         keys = (("S1", "first order S1", -0.2), ("ST", "total ST", 0.2))
-    elif measure == "prcc":
+    elif sensitivity["prcc"].notna().any():
         keys = (("rho", "Spearman's ρ", -0.2), ("prcc", "partial (PRCC)", 0.2))
     else:
         keys = (("rho", "Spearman's ρ", 0.0),)
     for number, (ax, column) in enumerate(zip(axes, shown, strict=False)):
         rows = sensitivity[sensitivity["output"] == column]
-        rows = rows.reindex(effect(rows).sort_values().index)[-MAX_INPUTS:]
+        rows = rows.sort_values("effect")[-MAX_INPUTS:]
         place = np.arange(len(rows))
         for key, name, shift in keys:
             low = (rows[key] - rows[f"{key}_low"]).clip(lower=0)
             high = (rows[f"{key}_high"] - rows[key]).clip(lower=0)
             ax.barh(place + shift, rows[key], height=0.6 / len(keys), label=name,
                     xerr=[low, high], capsize=2, error_kw={"linewidth": 0.8})  # fmt: skip
-        ax.set_yticks(place, [names[path] for path in rows["input"]], fontsize=7)
+        ax.set_yticks(place, [labels[path] for path in rows["input"]], fontsize=7)
         ax.axvline(0, color="0.5", linewidth=0.8)
         ax.set_xlim(-0.05 if sobol else -1.0, 1.05 if sobol else 1.0)
         ax.set_xlabel("Sobol' index" if sobol else "rank correlation", fontsize=8)

@@ -34,29 +34,37 @@ from collections.abc import Sequence
 import numpy as np
 import pandas as pd
 
+from ..sweep.cases import short_keys
 from .statistics import CONFIDENCE
 
 SOBOL_COLUMNS = ["output", "input", "S1", "S1_low", "S1_high", "ST", "ST_low", "ST_high"]
+TABLE_WORDS = {"joints", "clearance", "bodies", "drivers", "forces", "function"}  # in labels
 PERFECT = 1 - 1e-12  # a correlation this close to +-1 is perfect (1 but for rounding)
 RANK_COLUMNS = ["output", "input", "n", "rho", "rho_low", "rho_high", "prcc", "prcc_low",
                 "prcc_high"]  # fmt: skip
 
 
-def strength(sensitivity: pd.DataFrame) -> str:
-    """The column that ranks inputs: ``ST``, else ``prcc`` where it could be had, else ``rho``."""
-    if "ST" in sensitivity:
-        return "ST"
-    return "prcc" if sensitivity.get("prcc", pd.Series()).notna().any() else "rho"
+def input_labels(inputs: Sequence[str]) -> dict[str, str]:
+    """Each input's path without the words every such path has (``joints``, ``clearance``).
 
-
-def effect(rows: pd.DataFrame) -> pd.Series:
-    """How strongly each row's input moves its output: ``|ST|``, or ``|prcc|`` (``|rho|``).
-
-    ``|rho|`` where the output had too few cases for ``prcc``; 0 where there is neither.
+    ``joints.crank_coupler.clearance.journal_radius`` -> "crank_coupler journal_radius";
+    the shortest distinct trailing parts where that would confuse two inputs.
     """
-    if "ST" in rows:
-        return rows["ST"].abs().fillna(0.0)
-    return rows["prcc"].abs().fillna(rows["rho"].abs()).fillna(0.0)
+    labels = {path: " ".join(p for p in path.split(".") if p not in TABLE_WORDS) or path
+              for path in inputs}  # fmt: skip
+    if len(set(labels.values())) < len(labels):
+        return short_keys(list(inputs))
+    return labels
+
+
+def _with_effect(rows: pd.DataFrame) -> pd.DataFrame:
+    """The rows with ``effect``: how strongly the input moves the output, to rank inputs by.
+
+    ``|ST|``, or ``|prcc|`` (``|rho|`` where the output had too few cases for it); 0 for none.
+    """
+    rank = rows["prcc"].abs().fillna(rows["rho"].abs()) if "prcc" in rows else None
+    found = rows["ST"].abs() if "ST" in rows else rank
+    return rows.assign(effect=found.fillna(0.0))
 
 
 def sobol_indices(
@@ -90,7 +98,7 @@ def sobol_indices(
             s1, s1_half, st, st_half = (found[k][i] for k in ("S1", "S1_conf", "ST", "ST_conf"))
             rows.append([output, name, s1, s1 - s1_half, s1 + s1_half, st, st - st_half,
                          st + st_half])  # fmt: skip
-    return pd.DataFrame(rows, columns=SOBOL_COLUMNS)
+    return _with_effect(pd.DataFrame(rows, columns=SOBOL_COLUMNS))
 
 
 def rank_correlations(
@@ -132,7 +140,7 @@ def rank_correlations(
         for j, name in enumerate(numeric):
             rows.append([output, name, n, rho[j], *rho_interval[j], partial[j],
                          *prcc_interval[j]])  # fmt: skip
-    return pd.DataFrame(rows, columns=RANK_COLUMNS)
+    return _with_effect(pd.DataFrame(rows, columns=RANK_COLUMNS))
 
 
 def _partial(correlation: np.ndarray) -> np.ndarray:

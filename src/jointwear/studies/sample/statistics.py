@@ -76,12 +76,3 @@ def statistics(
         f"{s}{end}" for s in STATISTICS for end in ("", "_low", "_high")
     ]
     return pd.DataFrame(rows, columns=columns)
-
-
-def running(values: Sequence[float]) -> pd.DataFrame:
-    """The mean and P95 of the first k cases, for k = 1 to n (finite values in case order)."""
-    x = np.asarray(values, dtype=float)
-    x = x[np.isfinite(x)]
-    count = np.arange(1, len(x) + 1)
-    p95 = [np.quantile(x[:k], 0.95) for k in count]
-    return pd.DataFrame({"cases": count, "mean": np.cumsum(x) / count, "p95": p95})

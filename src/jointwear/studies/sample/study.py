@@ -50,7 +50,7 @@ from ..sweep.engine import (
 from .design import BASE, METHODS, correlation_matrix, unit_points
 from .distributions import Distribution, read_distribution
 from .plan import DIST_EXAMPLE
-from .sensitivity import rank_correlations, sobol_indices
+from .sensitivity import input_labels, rank_correlations, sobol_indices
 from .statistics import CONFIDENCE, MIN_CASES, statistics
 
 FIGURES = "figures"
@@ -307,7 +307,9 @@ def draw(
     plan = json.loads((folder / "sample.json").read_text())
     units = {path: entry["unit"] for path, entry in plan["distributions"].items()}
     whole = outcomes(table, inputs)
-    return save_sample_figures(whole, inputs, units, stats, sensitivity, folder / FIGURES)
+    drawn = whole[whole[BASE]] if BASE in whole else whole
+    labels = input_labels(inputs)
+    return save_sample_figures(drawn, labels, units, stats, sensitivity, folder / FIGURES)
 
 
 def redraw_sample_figures(folder: str | os.PathLike) -> list[Path]:
