@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from contextlib import closing
 from pathlib import Path
 from typing import Annotated
 
@@ -17,14 +18,12 @@ from .common import (
     Overrides,
     end_time,
     err,
-    fail,
     keep_whole,
-    one_line,
     out,
     print_table,
 )
 from .progress import SweepProgress
-from .study_commands import print_tally
+from .study_commands import print_tally, study_errors
 
 DEFAULT_METHOD, DEFAULT_SEED = "lhs", 1  # studies.sample.study.sample's, not imported: light
 
@@ -115,10 +114,10 @@ def sample(
 
     bar = SweepProgress("sample")
     named: dict[str, str] = {}
-    try:
+    with study_errors(out_dir, named, "study"), closing(bar):
         plan = make_sample_plan(dist or [], study_file, end_time(overrides, t_end), correlate or [])
         if t_end is not None:
-            named = {T_END: "--t-end"}
+            named[T_END] = "--t-end"
         count = n if n is not None else plan.n
         if count is None:
             raise ModelError(["--n: how many cases? give --n N (or n in the study file)"])
@@ -130,17 +129,6 @@ def sample(
             workers=workers,
             figures=figures, progress=bar,
         )  # fmt: skip
-    except ModelError as error:
-        raise fail(error, named) from None
-    except OSError as error:
-        err.print(
-            f"could not write in {out_dir}: {one_line(str(error))}; the finished cases are "
-            "kept in its cases folder, and running the study again skips them",
-            **PLAIN,
-        )
-        raise typer.Exit(code=3) from None
-    finally:
-        bar.close()
     _print_results(results, out_dir)
     if results.interrupted:
         err.print("interrupted: the tables hold the cases finished so far", soft_wrap=True)

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from contextlib import closing, contextmanager
 from pathlib import Path
 from typing import Annotated
 
@@ -66,16 +68,15 @@ def sweep(
     OUT gets cases/<case>/ (a results folder per case), sweep.csv and sweep.parquet (one row
     per case) and figures/. Running the same sweep again skips the cases already finished.
     """
-    from ..model import ModelError
     from ..studies.sweep.cases import make_plan
     from ..studies.sweep.study import sweep as run_sweep
 
     bar = SweepProgress()
     named: dict[str, str] = {}  # solver.t_end's problems are --t-end's, unless it is varied
-    try:
+    with study_errors(out_dir, named, "sweep"), closing(bar):
         plan = make_plan(vary or [], sweep_file, end_time(overrides, t_end), link or [])
         if t_end is not None and T_END not in plan.vary and T_END not in plan.link:
-            named = {T_END: "--t-end"}
+            named[T_END] = "--t-end"
         results = run_sweep(
             model,
             out_dir,
@@ -88,23 +89,33 @@ def sweep(
             figures=figures,
             progress=bar,
         )
-    except ModelError as error:
-        raise fail(error, named) from None
-    except OSError as error:
-        err.print(
-            f"could not write in {out_dir}: {one_line(str(error))}; the finished cases are "
-            "kept in its cases folder, and running the sweep again skips them",
-            **PLAIN,
-        )
-        raise typer.Exit(code=3) from None
-    finally:
-        bar.close()
     print_tally(results.table, results.skipped, results.failed)
     out.print(f"table in {out_dir / 'sweep.csv'} and sweep.parquet", **PLAIN)
     if results.interrupted:
         err.print("interrupted: the table holds the cases finished so far", soft_wrap=True)
     if results.failed:
         raise typer.Exit(code=1)
+
+
+@contextmanager
+def study_errors(out_dir: Path, named: dict[str, str], kind: str) -> Iterator[None]:
+    """A study's invalid input as exit code 2, and a folder it cannot write as exit code 3.
+
+    ``named``: as for ``fail``, filled in while the study is set up.
+    """
+    from ..model import ModelError
+
+    try:
+        yield
+    except ModelError as error:
+        raise fail(error, named) from None
+    except OSError as error:
+        err.print(
+            f"could not write in {out_dir}: {one_line(str(error))}; the finished cases are "
+            f"kept in its cases folder, and running the {kind} again skips them",
+            **PLAIN,
+        )
+        raise typer.Exit(code=3) from None
 
 
 def print_tally(table: object, skipped: list[str], failed: list[str], shown: int = 20) -> None:

@@ -43,8 +43,8 @@ from ..sweep.cases import MAX_CASES, indexed_cases
 from ..sweep.engine import (
     FIXED_COLUMNS,
     StudyProgress,
+    StudyResults,
     check_run_options,
-    incomplete,
     run_study,
 )
 from .design import BASE, METHODS, correlation_matrix, unit_points
@@ -65,21 +65,11 @@ G12 = "%.12g"  # numbers in the CSV tables
 
 
 @dataclass(frozen=True)
-class SampleResults:
+class SampleResults(StudyResults):
     """Outcome of ``sample``: the tables, and where they and the figures are."""
 
-    folder: Path
-    table: pd.DataFrame
-    statistics: pd.DataFrame
-    sensitivity: pd.DataFrame
-    skipped: list[str] = field(default_factory=list)
-    figures: list[Path] = field(default_factory=list)
-    interrupted: bool = False
-
-    @property
-    def failed(self) -> list[str]:
-        """The cases not complete (a life run at a joint's limit is), or not run."""
-        return incomplete(self.table)
+    statistics: pd.DataFrame = field(default_factory=pd.DataFrame)
+    sensitivity: pd.DataFrame = field(default_factory=pd.DataFrame)
 
 
 def sample(
@@ -176,8 +166,8 @@ def sample(
     with stop_requests():
         stats, sensitivity = analyse(table, paths, method, confidence, done.folder)
         drawn = draw(done.folder, table, paths, stats, sensitivity) if figures else []
-    return SampleResults(done.folder, table, stats, sensitivity, done.skipped, drawn,
-                         done.interrupted)  # fmt: skip
+    return SampleResults(done.folder, table, done.skipped, drawn, done.interrupted, stats,
+                         sensitivity)  # fmt: skip
 
 
 def _max_change_problems(max_change: str | float | None, cycles: int | None) -> list[str]:

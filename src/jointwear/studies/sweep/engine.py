@@ -22,7 +22,7 @@ import math
 import os
 import re
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 import pandas as pd
@@ -59,6 +59,22 @@ StudyProgress = Callable[[CaseReport | None, int, int], None]
 def incomplete(table: pd.DataFrame) -> list[str]:
     """The cases of a study's table not complete (``COMPLETE``), or not run."""
     return table.loc[~table["status"].isin(COMPLETE), "case"].tolist()
+
+
+@dataclass(frozen=True)
+class StudyResults:
+    """Outcome of a study: its table, and where it and the figures are."""
+
+    folder: Path
+    table: pd.DataFrame
+    skipped: list[str] = field(default_factory=list)
+    figures: list[Path] = field(default_factory=list)
+    interrupted: bool = False
+
+    @property
+    def failed(self) -> list[str]:
+        """The cases not complete (a life run at a joint's limit is), or not run."""
+        return incomplete(self.table)
 
 
 @dataclass(frozen=True)

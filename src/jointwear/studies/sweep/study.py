@@ -12,7 +12,6 @@ from __future__ import annotations
 import json
 import os
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, field
 from pathlib import Path
 
 import pandas as pd
@@ -21,25 +20,13 @@ from ...engine.interrupts import stop_requests
 from ...model import Model, ModelError
 from ...model.files import SAVED_MODEL
 from .cases import Case, check_link, check_vary, make_cases, value_text
-from .engine import CASES_FOLDER, StudyProgress, check_run_options, incomplete, run_study
+from .engine import CASES_FOLDER, StudyProgress, StudyResults, check_run_options, run_study
 
 FIGURES = "figures"
 
 
-@dataclass(frozen=True)
-class SweepResults:
+class SweepResults(StudyResults):
     """Outcome of ``sweep``: the table, and where it and the figures are."""
-
-    folder: Path
-    table: pd.DataFrame
-    skipped: list[str] = field(default_factory=list)
-    figures: list[Path] = field(default_factory=list)
-    interrupted: bool = False
-
-    @property
-    def failed(self) -> list[str]:
-        """The cases not complete (a life run at a joint's limit is), or not run."""
-        return incomplete(self.table)
 
 
 def sweep(
