@@ -22,8 +22,9 @@ pairs of summits of radius beta, offset r, overlap w = s - h - r^2 / (4 beta), o
 integrates the pairs by quadrature). F_5/2 has no elementary form; ``f52`` is the common
 power-law fit 4.4086e-5 (4 - lam)^6.804 for lam < 4, 0 beyond (Hu et al. 1994, used by
 Arcoumanis et al. 1997 and most mixed-lubrication papers since). Measured against quadrature
-it is within 11 % of F_5/2 for -1 <= lam <= 2 and falls short in the tail: -35 % at lam =
-2.5, -74 % at 3, -98 % at 3.5 (docs/theory.md; benchmarks/asperity_fit.py).
+it is 1.5 % to 11.4 % short of F_5/2 for -1 <= lam <= 2, and further in the tail: -35 % at
+lam = 2.5, -74 % at 3, -98 % at 3.5, at most 5e-4 in absolute terms (0.08 % of F_5/2(0))
+(docs/theory.md; benchmarks/asperity_fit.py).
 
 Load. The load a journal's asperities carry needs no fit. Across the contact the gap is
 h(x) = h_min + x^2 / (2 R*) (the circles' gap to order (x / R)^2), so with u = x / sqrt(2 R*
@@ -79,8 +80,8 @@ _LAM_APART = 20.0  # beyond it F_3 < 1e-92 and the recurrence loses digits: no c
 def f52(lam: float) -> float:
     """Greenwood-Tripp integral F_5/2(lam) [-] by the fit of Hu et al. (1994).
 
-    4.4086e-5 (4 - lam)^6.804 for lam < 4, 0 beyond; lam = h / sigma [-]. Within 11 % of
-    the integral for -1 <= lam <= 2, short of it beyond 2.5 (module docstring).
+    4.4086e-5 (4 - lam)^6.804 for lam < 4, 0 beyond; lam = h / sigma [-]. Up to 11.4 %
+    short of the integral for -1 <= lam <= 2, further beyond (module docstring).
     """
     if lam >= _FIT_END:
         return 0.0
