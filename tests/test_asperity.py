@@ -207,6 +207,10 @@ def test_the_load_matches_the_circles_within_the_parabolas_error(r_j, c, sigma, 
     load = asperity_load(lam * sigma, sigma, K, E_STAR, r_star, WIDTH)
     exact = circle_load(lam, r_j, c, sigma)
     assert abs(load / exact - 1) < (abs(lam) / 2 + 0.5) * sigma / c
+    # with the gap's curvature at e = c - lam sigma, e (R_J + e) / (R_J R_B^2): measured 0.28
+    e, r_b = c - lam * sigma, r_j + c
+    load = asperity_load(lam * sigma, sigma, K, E_STAR, r_j * r_b**2 / (e * (r_j + e)), WIDTH)
+    assert abs(load / exact - 1) < 0.5 * sigma / c
 
 
 def test_the_load_falls_smoothly_as_the_gap_opens_and_has_no_step_at_lambda_4():

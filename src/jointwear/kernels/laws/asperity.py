@@ -10,7 +10,7 @@
 | lam | h / sigma (at the minimum gap: the film parameter, lambda ratio) | - | |
 | F_n(lam) | (1/sqrt(2 pi)) int_lam^inf (s - lam)^n exp(-s^2/2) ds | - | GT |
 | p_a | asperity contact pressure k_gt E' F_5/2(h / sigma) | Pa | GT |
-| r_star, width | relative radius R_B R_J / (R_B - R_J) and joint width L | m | |
+| r_star, width | relative radius R_B R_J / (R_B - R_J) (or see Load) and joint width L | m | |
 
 Pressure. Greenwood and Tripp (1970-71) give the mean pressure the asperities of two rough
 surfaces carry at mean-plane separation h as p_a = k_gt E' F_5/2(h / sigma). E' is the contact
@@ -40,7 +40,12 @@ F_0 = Q, F_1 = phi - lam Q and F_(n+1) = n F_(n-1) - lam F_n (integration by par
     W = L int p_a dx = (5 pi / 16) L k_gt E' sqrt(2 R* sigma) F_3(h_min / sigma),
 
 exact for the parabolic gap, smooth, for every h_min (negative: the mean planes overlap), and
-dW/dh_min = -(15 pi / 16) L k_gt E' sqrt(2 R* / sigma) F_2 < 0. The same substitution gives
+dW/dh_min = -(15 pi / 16) L k_gt E' sqrt(2 R* / sigma) F_2 < 0. Against the circles' exact gap
+(R_B - e cos a - sqrt(R_J^2 - e^2 sin^2 a) along the bearing's radius) it is within
+(|lam_min| / 2 + 1/2) sigma / c: the gap's curvature at eccentricity e is e (R_J + e) /
+(R_J R_B^2), 1 / R* only at e = c, which accounts for lam_min sigma / (2 c); passing that
+curvature's radius as r_star leaves terms of order R* sigma / R^2 ~ sigma / c, measured below
+0.3 sigma / c. The same substitution gives
 the pressure's second moment across the contact, int x^2 p_a dx / int p_a dx = R* sigma F_4 /
 (4 F_3) (with B(3/2, 7/2) / B(1/2, 7/2) = 1/8); ``asperity_half_width`` is the half-width of the
 Hertz ellipse with that moment, sqrt(R* sigma F_4 / F_3), for spreading the wear.
