@@ -1,1 +1,5 @@
-"""Lubricant films and the surfaces they separate: constants from the user's keys."""
+"""Lubricant films solved ahead of a run.
+
+``reynolds`` solves the finite journal bearing's Reynolds equation; ``impedance`` tabulates
+its film force for the kernels.
+"""
