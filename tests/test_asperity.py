@@ -16,16 +16,14 @@ import numpy as np
 import pytest
 from scipy import integrate, special
 
-from jointwear.film.asperity import asperity_constant, roughness_products
 from jointwear.kernels.laws.asperity import (
-    asperity_half_width,
+    asperity_energy,
     asperity_load,
     asperity_pressure,
     f52,
-    gaussian_moments,
     mean_gap,
 )
-from jointwear.model import ModelError
+from jointwear.model.laws.lubrication import asperity_constant
 
 ROOT = Path(__file__).parents[1]
 SQRT_2PI = math.sqrt(2 * math.pi)
@@ -127,7 +125,7 @@ def test_the_pair_sum_gives_the_greenwood_tripp_constant_with_e_star():
     pairs = integrate.quad(inner, 0.0, np.inf, epsabs=0, epsrel=1e-10, limit=200)[0]
     hertz = 4.0 / 3.0 * e_star * math.sqrt(beta / 2) * sigma**1.5
     pressure = eta**2 * 4 * math.pi * beta * sigma * hertz * pairs
-    k = asperity_constant(*roughness_products(eta, beta, sigma))
+    k = asperity_constant(eta * sigma * beta, sigma / beta)
     assert pressure == pytest.approx(k * e_star * f_n_pbdv(2.5, lam), rel=1e-8)
 
 
@@ -136,116 +134,93 @@ def test_the_constant_by_hand():
     assert asperity_constant(0.04, 1e-3) == pytest.approx(4.7393 * 1.6e-3 * 0.031623, rel=1e-4)
 
 
-def test_the_products_of_the_asperity_data():
-    assert roughness_products(8e8, 1e-4, 0.5e-6) == pytest.approx((0.04, 5e-3))
-
-
-@pytest.mark.parametrize(
-    ("call", "field"),
-    [
-        (lambda: asperity_constant(0.0, 1e-3), "roughness_parameter"),
-        (lambda: asperity_constant(0.04, float("nan")), "slope"),
-        (lambda: roughness_products(-1.0, 1e-4, 1e-6), "asperity_density"),
-        (lambda: roughness_products(1e10, float("inf"), 1e-6), "asperity_radius"),
-        (lambda: roughness_products(1e10, 1e-4, True), "roughness"),
-    ],
-)
-def test_bad_values_name_their_field(call, field):
-    with pytest.raises(ModelError) as error:
-        call()
-    (line,) = error.value.problems
-    assert line.startswith(f"{field}: ") and "> 0" in line
-
-
-# ---------------------------------------------------------------- F_0 ... F_4
-
-
-@pytest.mark.parametrize("lam", [-10.0, -3.0, -0.7, 0.0, 0.3, 1.0, 2.5, 4.0, 6.0, 10.0])
-def test_the_integer_moments_against_quadrature_and_pbdv(lam):
-    moments = gaussian_moments(lam)
-    for n, value in enumerate(moments):
-        assert value == pytest.approx(f_n_quad(n, lam), rel=1e-7)  # F_4(10): 4e-8
-        assert value == pytest.approx(f_n_pbdv(n, lam), rel=1e-7)
-
-
 # ---------------------------------------------------------------- the journal's load
 
 K, E_STAR, WIDTH = 2.4e-4, 115e9, 0.02
+SCALE = K * E_STAR  # the kernel's pressure scale k_gt E' [Pa]
 
 
-def parabola_load(h_min, sigma, r_star):
-    """L int p_a dx over h = h_min + x^2 / (2 R*), p_a with F_5/2 by pbdv, by quadrature."""
+def parabola_load(h_min, sigma, r_star, f=f52):
+    """L int p_a dx over h = h_min + x^2 / (2 R*), p_a = k E* f(h / sigma), by quadrature."""
     half = math.sqrt(2 * r_star * (max(0.0, -h_min) + 40 * sigma))
-    pressure = lambda x: K * E_STAR * f_n_pbdv(2.5, (h_min + x * x / (2 * r_star)) / sigma)  # noqa: E731
-    return WIDTH * 2 * integrate.quad(pressure, 0.0, half, epsabs=0, epsrel=1e-11, limit=200)[0]
+    pressure = lambda x: SCALE * f((h_min + x * x / (2 * r_star)) / sigma)  # noqa: E731
+    edge = math.sqrt(max(0.0, 2 * r_star * (4 * sigma - h_min)))  # where the fit ends
+    points = [edge] if 0.0 < edge < half else None
+    whole = integrate.quad(pressure, 0.0, half, points=points, epsabs=0, epsrel=1e-11, limit=200)
+    return WIDTH * 2 * whole[0]
 
 
-@pytest.mark.parametrize("lam", [-5.0, -1.0, 0.0, 1.0, 2.5, 4.0, 6.0])
-def test_the_load_is_the_pressure_integrated_over_the_parabolic_gap(lam):
+@pytest.mark.parametrize("lam", [-5.0, -1.0, 0.0, 1.0, 2.5, 3.9])
+def test_the_load_is_the_fitted_pressure_integrated_over_the_parabolic_gap(lam):
     sigma, r_star = 0.5e-6, 1.0
-    load = asperity_load(lam * sigma, sigma, K, E_STAR, r_star, WIDTH)
+    load = asperity_load(lam * sigma, sigma, SCALE, r_star, WIDTH)
     assert load == pytest.approx(parabola_load(lam * sigma, sigma, r_star), rel=1e-8)
+
+
+# The fit's load against the Gaussian one, (5 pi / 16) F_3: int F_5/2(lam + u^2) du =
+# B(1/2, 7/2) F_3(lam) (the module docstring), here by quadrature of F_5/2 itself. Measured
+# short by 6.2 to 15.6 % for -1 <= lam <= 2 (benchmarks/asperity_fit.py); bound 17 %, and
+# never above the Gaussian load.
+@pytest.mark.parametrize("lam", [-1.0, 0.0, 0.5, 1.0, 1.5, 2.0])
+def test_the_fits_load_is_within_its_stated_error_of_the_gaussian(lam):
+    sigma, r_star = 0.5e-6, 1.0
+    load = asperity_load(lam * sigma, sigma, SCALE, r_star, WIDTH)
+    gaussian = parabola_load(lam * sigma, sigma, r_star, f=lambda x: f_n_pbdv(2.5, x))
+    assert gaussian * 5 * math.pi / 16 * f_n_pbdv(3, lam) == pytest.approx(
+        gaussian * f_n_quad(3, lam) * 5 * math.pi / 16, rel=1e-7
+    )
+    assert -0.17 < load / gaussian - 1 < 0.0
 
 
 def circle_load(lam, r_j, c, sigma):
     """Load [N] over the circles' exact gap: benchmarks/asperity_fit.py's, times k E* L."""
-    return K * E_STAR * WIDTH * SCRIPT.circle_load(lam, r_j, c, sigma)
+    return SCALE * WIDTH * SCRIPT.circle_load(lam, r_j, c, sigma)
 
 
 # Parabola against circles. Along the bearing's radius the gap is R_B - e cos a - sqrt(R_J^2 -
 # e^2 sin^2 a) = h_min + e (R_J + e) a^2 / (2 R_J) + O(e a^4), x = R_B a: its curvature is
 # 1/R* at e = c but (1 - lam sigma / c) / R* at e = c - lam sigma, so the exact load is
 # larger by lam sigma / (2 c) to first order (the load goes as sqrt(R*)); the a^4 terms, the
-# projection cos a and the arc R_B da add terms of order <a^2> ~ R* sigma / R^2 ~ sigma / c,
-# measured below 0.25 sigma / c. Bound: (|lam| / 2 + 1/2) sigma / c.
+# projection cos a and the arc R_B da add terms of order <a^2> ~ R* sigma / R^2 ~ sigma / c.
+# Bound: (|lam| / 2 + 1/2) sigma / c.
 @pytest.mark.parametrize("r_j", [5e-3, 25e-3])
 @pytest.mark.parametrize("c", [10e-6, 100e-6, 500e-6])
 @pytest.mark.parametrize("sigma", [0.1e-6, 1e-6])
-@pytest.mark.parametrize("lam", [-2.0, 0.0, 2.0, 4.0])
+@pytest.mark.parametrize("lam", [-2.0, 0.0, 2.0, 3.5])
 def test_the_load_matches_the_circles_within_the_parabolas_error(r_j, c, sigma, lam):
     r_star = (r_j + c) * r_j / c
-    load = asperity_load(lam * sigma, sigma, K, E_STAR, r_star, WIDTH)
+    load = asperity_load(lam * sigma, sigma, SCALE, r_star, WIDTH)
     exact = circle_load(lam, r_j, c, sigma)
     assert abs(load / exact - 1) < (abs(lam) / 2 + 0.5) * sigma / c
-    # with the gap's curvature at e = c - lam sigma, e (R_J + e) / (R_J R_B^2): measured 0.28
-    e, r_b = c - lam * sigma, r_j + c
-    load = asperity_load(lam * sigma, sigma, K, E_STAR, r_j * r_b**2 / (e * (r_j + e)), WIDTH)
-    assert abs(load / exact - 1) < 0.5 * sigma / c
 
 
-def test_the_load_falls_smoothly_as_the_gap_opens_and_has_no_step_at_lambda_4():
+def test_the_load_falls_smoothly_to_zero_at_lambda_4():
     sigma, r_star = 1e-6, 0.5
-    lams = np.linspace(-6.0, 12.0, 361)
-    loads = [asperity_load(lam * sigma, sigma, K, E_STAR, r_star, WIDTH) for lam in lams]
+    lams = np.linspace(-6.0, 3.99, 300)
+    loads = [asperity_load(lam * sigma, sigma, SCALE, r_star, WIDTH) for lam in lams]
     assert all(a > b > 0 for a, b in itertools.pairwise(loads))
-    # slope dW/dh_min = -(15 pi / 16) L k E* sqrt(2 R* / sigma) F_2 (d F_3 / d lam = -3 F_2),
-    # by central differences on either side of lam = 4
-    for lam in (4.0 - 1e-3, 4.0, 4.0 + 1e-3):
-        d = 1e-5 * sigma
-        up = asperity_load(lam * sigma + d, sigma, K, E_STAR, r_star, WIDTH)
-        down = asperity_load(lam * sigma - d, sigma, K, E_STAR, r_star, WIDTH)
-        slope = -15 * math.pi / 16 * WIDTH * K * E_STAR * math.sqrt(2 * r_star / sigma)
-        assert (up - down) / (2 * d) == pytest.approx(slope * f_n_pbdv(2, lam), rel=1e-5)
+    assert asperity_load(4.0 * sigma, sigma, SCALE, r_star, WIDTH) == 0.0
+    assert asperity_load(9.0 * sigma, sigma, SCALE, r_star, WIDTH) == 0.0
+    # dW/dh_min = -(m + 1/2) W / (sigma (4 - lam)): the fit's power law, by central
+    # differences (relative step 1e-6 of the distance to lam = 4: error ~ 1e-11).
+    for lam in (-2.0, 1.0, 3.0):
+        d = 1e-6 * (4.0 - lam) * sigma
+        up = asperity_load(lam * sigma + d, sigma, SCALE, r_star, WIDTH)
+        down = asperity_load(lam * sigma - d, sigma, SCALE, r_star, WIDTH)
+        load = asperity_load(lam * sigma, sigma, SCALE, r_star, WIDTH)
+        slope = -(6.804 + 0.5) * load / (sigma * (4.0 - lam))
+        assert (up - down) / (2 * d) == pytest.approx(slope, rel=1e-7)
 
 
-def test_the_load_is_zero_only_far_apart():
-    sigma, r_star = 1e-6, 0.5
-    assert asperity_load(19.9 * sigma, sigma, K, E_STAR, r_star, WIDTH) > 0.0
-    assert asperity_load(20.0 * sigma, sigma, K, E_STAR, r_star, WIDTH) == 0.0
-    assert asperity_half_width(25.0 * sigma, sigma, r_star) == 0.0
-
-
-@pytest.mark.parametrize("lam", [-8.0, -1.0, 0.0, 1.0, 3.0, 6.0])
-def test_the_half_width_has_the_pressures_second_moment(lam):
-    # Hertz's ellipse p ~ sqrt(1 - x^2 / b^2) has int x^2 p / int p = b^2 / 4.
+@pytest.mark.parametrize("lam", [-3.0, 0.0, 2.0, 3.9, 5.0])
+def test_the_stored_energy_is_the_integral_of_the_load(lam):
     sigma, r_star = 0.5e-6, 1.0
-    h_min = lam * sigma
-    half = math.sqrt(2 * r_star * (max(0.0, -h_min) + 40 * sigma))
-    p = lambda x: f_n_pbdv(2.5, (h_min + x * x / (2 * r_star)) / sigma)  # noqa: E731
-    zeroth = integrate.quad(p, 0.0, half, epsabs=0, epsrel=1e-11, limit=200)[0]
-    second = integrate.quad(lambda x: x * x * p(x), 0.0, half, epsabs=0, epsrel=1e-11, limit=200)
-    b = asperity_half_width(h_min, sigma, r_star)
-    assert b * b / 4 == pytest.approx(second[0] / zeroth, rel=1e-7)
+    energy = asperity_energy(lam * sigma, sigma, SCALE, r_star, WIDTH)
+    work = integrate.quad(
+        lambda h: asperity_load(h, sigma, SCALE, r_star, WIDTH), lam * sigma, 4 * sigma,
+        epsabs=0, epsrel=1e-11,
+    )[0] if lam < 4 else 0.0  # fmt: skip
+    assert energy == pytest.approx(work, rel=1e-9, abs=0.0)
 
 
 # ---------------------------------------------------------------- the mean gap

@@ -14,6 +14,7 @@ import pytest
 
 import jointwear as jw
 from jointwear.citations import REFERENCES
+from jointwear.film.impedance import impedance_table
 from jointwear.joints.revolute.schema import RevoluteClearance as Clearance
 from jointwear.model.clearance import _KEY_TYPES
 from jointwear.model.laws import EVERY, NORMAL
@@ -31,6 +32,7 @@ SAMPLES = {
     "mu": (0.1, 0.2, 0.3),
     "eps": (0.3, 0.5, 0.8), "eps_dot": (0.1, -2.0, 5.0), "gamma_dot": (1.0, -3.0, 10.0),
     "w": (100.0, 50.0, -20.0), "r": (0.01, 0.02, 0.01), "c": (1e-4, 2e-4, 5e-5),
+    "table": (impedance_table(1.0),) * 3,  # the finite bearing's, L / D = 1
 }  # fmt: skip
 POINTS = range(3)
 DISPATCHED = [family for family in EVERY if family.dispatchers]

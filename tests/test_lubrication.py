@@ -15,7 +15,6 @@ from scipy.integrate import dblquad, quad, solve_bvp
 
 from jointwear.kernels.laws.lubrication import (
     FilmModel,
-    film_force,
     film_force_components,
     film_power_loss,
     film_torques,
@@ -29,6 +28,26 @@ FORCES = {SHORT: short_bearing_forces, LONG: long_bearing_forces}
 # Round numbers: A = mu R L^3 / (2 c^2) = 0.1 * 0.01 * 8e-6 / 2e-8 = 0.4 N s,
 # B = 6 mu L R^3 / c^2 = 6 * 0.1 * 0.02 * 1e-6 / 1e-8 = 1.2 N s.
 MU, R, L, C = 0.1, 0.01, 0.02, 1e-4
+
+NO_TABLE = np.zeros(0)  # the short and long bearings read no impedance table
+
+
+def components(model, eps, eps_dot, gamma_dot, w, *fluid):
+    """(f_r, f_t) [N] by the dispatcher."""
+    return film_force_components(model, NO_TABLE, eps, eps_dot, gamma_dot, w, *fluid)
+
+
+def power_loss(model, eps, eps_dot, gamma_dot, w, w_rel, *fluid):
+    """The film's power loss [W] at the model's own force."""
+    f_r, f_t = components(model, eps, eps_dot, gamma_dot, w, *fluid)
+    return film_power_loss(f_r, f_t, eps, eps_dot, gamma_dot, w, w_rel, *fluid)
+
+
+def torques(model, eps, eps_dot, gamma_dot, w, w_rel, mu, r, width, c):
+    """The film's shear torques (journal, bearing) [N m] at the model's own force."""
+    _, f_t = components(model, eps, eps_dot, gamma_dot, w, mu, r, width, c)
+    return film_torques(f_t, eps, w_rel, mu, r, width, c)
+
 
 # scipy's adaptive quadrature is asked for 1e-11 relative; the integrands are smooth
 # (h >= c (1 - 0.9)), so it delivers that, and 1e-8 leaves room for the nested dblquad.
@@ -73,14 +92,10 @@ HAND = [
 @pytest.mark.parametrize(("model", "f_r", "f_t", "power"), HAND)
 def test_hand_numbers(model, f_r, f_t, power):
     # 1e-6 relative: the hand numbers carry 8 significant digits, rounded.
-    got = film_force_components(model, 0.5, 2.0, 10.0, 100.0, MU, R, L, C)
+    got = components(model, 0.5, 2.0, 10.0, 100.0, MU, R, L, C)
     assert got == pytest.approx((f_r, f_t), rel=1e-6)
     assert FORCES[model](0.5, 2.0, 10.0, 100.0, MU, R, L, C) == got
-    # gamma = pi / 3: f_x = f_r / 2 - f_t sqrt(3) / 2, f_y = f_r sqrt(3) / 2 + f_t / 2.
-    s3 = math.sqrt(3.0) / 2.0
-    f_xy = film_force(model, 0.5, 2.0, math.pi / 3.0, 10.0, 100.0, MU, R, L, C)
-    assert f_xy == pytest.approx((0.5 * f_r - s3 * f_t, s3 * f_r + 0.5 * f_t), rel=1e-6)
-    p = film_power_loss(model, 0.5, 2.0, 10.0, 100.0, 40.0, MU, R, L, C)
+    p = power_loss(model, 0.5, 2.0, 10.0, 100.0, 40.0, MU, R, L, C)
     assert p == pytest.approx(power, rel=1e-6)
 
 
@@ -113,7 +128,8 @@ def test_short_bearing_steady_load_and_attitude(eps):
     # sense of rotation. There the film pushes straight up with W.
     gamma = -0.5 * math.pi + short_attitude(eps)
     w_load = short_load(eps, 200.0)
-    f_x, f_y = film_force(SHORT, eps, 0.0, gamma, 0.0, 200.0, MU, R, L, C)
+    f_x = f_r * math.cos(gamma) - f_t * math.sin(gamma)  # f_r e_r + f_t e_t
+    f_y = f_r * math.sin(gamma) + f_t * math.cos(gamma)
     assert f_x == pytest.approx(0.0, abs=1e-12 * w_load)
     assert f_y == pytest.approx(w_load, rel=1e-12)
 
@@ -286,8 +302,8 @@ def long_attitude(eps):
 def test_rigid_corotation_gives_no_force_and_no_loss(model):
     # Journal, bearing and line of centres all turn at 30 rad/s: the film is at rest relative
     # to both surfaces, so w - 2 gamma_dot = 60 - 60 = 0 and w_rel = 0.
-    assert film_force(model, 0.7, 0.0, 1.1, 30.0, 60.0, MU, R, L, C) == (0.0, 0.0)
-    assert film_power_loss(model, 0.7, 0.0, 30.0, 60.0, 0.0, MU, R, L, C) == 0.0
+    assert components(model, 0.7, 0.0, 30.0, 60.0, MU, R, L, C) == (0.0, 0.0)
+    assert power_loss(model, 0.7, 0.0, 30.0, 60.0, 0.0, MU, R, L, C) == 0.0
 
 
 @pytest.mark.parametrize("model", [SHORT, LONG])
@@ -298,18 +314,8 @@ def test_mirrored_film_for_negative_wedge_speed(model):
 
 
 @pytest.mark.parametrize("model", [SHORT, LONG])
-def test_global_force_rotates_the_components(model):
-    f_r, f_t = film_force_components(model, 0.4, -1.0, 3.0, 50.0, MU, R, L, C)
-    for gamma in np.linspace(-4.0, 4.0, 9):
-        f_x, f_y = film_force(model, 0.4, -1.0, gamma, 3.0, 50.0, MU, R, L, C)
-        e_r = np.array([math.cos(gamma), math.sin(gamma)])
-        e_t = np.array([-math.sin(gamma), math.cos(gamma)])
-        assert (f_x, f_y) == pytest.approx(tuple(f_r * e_r + f_t * e_t), rel=1e-14, abs=1e-12)
-
-
-@pytest.mark.parametrize("model", [SHORT, LONG])
 def test_no_force_at_the_centre_without_squeeze(model):
-    assert film_force_components(model, 0.0, 0.0, 5.0, 300.0, MU, R, L, C) == (0.0, 0.0)
+    assert components(model, 0.0, 0.0, 5.0, 300.0, MU, R, L, C) == (0.0, 0.0)
     # Near the centre the force vanishes linearly in eps.
     small = [math.hypot(*FORCES[model](e, 0.0, 5.0, 300.0, MU, R, L, C)) / e for e in (1e-3, 1e-6)]
     assert small[1] == pytest.approx(small[0], rel=1e-5)
@@ -341,7 +347,7 @@ def test_steady_torques_are_the_classic_ones(model, eps):
     load, attitude = STEADY[model]
     couette = 2.0 * math.pi * MU * R**3 * L * 200.0 / (C * math.sqrt(1.0 - eps * eps))
     offset = 0.5 * eps * C * load(eps, 200.0) * math.sin(attitude(eps))
-    t_journal, t_bearing = film_torques(model, eps, 0.0, 0.0, 200.0, 200.0, MU, R, L, C)
+    t_journal, t_bearing = torques(model, eps, 0.0, 0.0, 200.0, 200.0, MU, R, L, C)
     assert t_journal == pytest.approx(-(couette + offset), rel=1e-12)
     assert t_bearing == pytest.approx(couette - offset, rel=1e-12)
 
@@ -360,10 +366,10 @@ def test_bodies_lose_what_the_film_dissipates(model, eps, eps_dot, gamma_dot, om
     # (f . de/dt, de/dt = c eps_dot e_r + c eps gamma_dot e_t) and both shear torques. The film
     # stores nothing, so what the bodies lose is what it dissipates.
     w, w_rel = omega_j + omega_b, omega_j - omega_b
-    f_r, f_t = film_force_components(model, eps, eps_dot, gamma_dot, w, MU, R, L, C)
-    t_j, t_b = film_torques(model, eps, eps_dot, gamma_dot, w, w_rel, MU, R, L, C)
+    f_r, f_t = components(model, eps, eps_dot, gamma_dot, w, MU, R, L, C)
+    t_j, t_b = torques(model, eps, eps_dot, gamma_dot, w, w_rel, MU, R, L, C)
     on_bodies = f_r * C * eps_dot + f_t * C * eps * gamma_dot + t_j * omega_j + t_b * omega_b
-    loss = film_power_loss(model, eps, eps_dot, gamma_dot, w, w_rel, MU, R, L, C)
+    loss = power_loss(model, eps, eps_dot, gamma_dot, w, w_rel, MU, R, L, C)
     scale = abs(f_r * C * eps_dot) + abs(f_t * C * eps * gamma_dot)
     scale += abs(t_j * omega_j) + abs(t_b * omega_b)
     # Subnormal powers (below 2.2e-308 W) keep fewer digits than 1e-12: a floor of 1e-300 W.
@@ -413,7 +419,7 @@ def test_centred_spinning_journal_dissipates_petroff_power(model):
     # 2 pi * 0.1 * 6.25 * 0.01 * 0.02 / 1e-4 = 7.853982 W.
     petroff = 2.0 * math.pi * MU * 2.5**2 * R * L / C
     assert petroff == pytest.approx(7.853982, rel=1e-7)
-    assert film_power_loss(model, 0.0, 0.0, 0.0, 250.0, 250.0, MU, R, L, C) == pytest.approx(
+    assert power_loss(model, 0.0, 0.0, 0.0, 250.0, 250.0, MU, R, L, C) == pytest.approx(
         petroff, rel=1e-14
     )
 
@@ -424,8 +430,8 @@ def test_centred_spinning_journal_dissipates_petroff_power(model):
 def test_pure_squeeze_loss_is_the_power_done_on_the_film(model, eps, eps_dot):
     # No rotation: the only power input is the journal pushing the film, -f_r c eps_dot, and
     # with p = 0 on the film's edges it is all dissipated by the pressure flow.
-    f_r, _ = film_force_components(model, eps, eps_dot, 0.0, 0.0, MU, R, L, C)
-    loss = film_power_loss(model, eps, eps_dot, 0.0, 0.0, 0.0, MU, R, L, C)
+    f_r, _ = components(model, eps, eps_dot, 0.0, 0.0, MU, R, L, C)
+    loss = power_loss(model, eps, eps_dot, 0.0, 0.0, 0.0, MU, R, L, C)
     assert loss == pytest.approx(-f_r * C * eps_dot, rel=1e-13)
     by_quadrature, rel = PRESSURE_LOSS[model]
     assert by_quadrature(eps, eps_dot, 0.0) == pytest.approx(-f_r * C * eps_dot, rel=rel)
@@ -439,7 +445,7 @@ def test_power_loss_against_quadrature(model, eps, eps_dot, v):
     expected = couette_by_quadrature(eps, w_rel)
     by_quadrature, rel = PRESSURE_LOSS[model]
     expected += by_quadrature(eps, eps_dot, v)
-    got = film_power_loss(model, eps, eps_dot, 7.0, v + 14.0, w_rel, MU, R, L, C)
+    got = power_loss(model, eps, eps_dot, 7.0, v + 14.0, w_rel, MU, R, L, C)
     assert got == pytest.approx(expected, rel=rel)
 
 
@@ -453,10 +459,10 @@ def test_power_loss_against_quadrature(model, eps, eps_dot, v):
     w_rel=st.floats(-2e3, 2e3),
 )
 def test_power_loss_never_negative_and_pushback(model, eps, eps_dot, gamma_dot, w, w_rel):
-    loss = film_power_loss(model, eps, eps_dot, gamma_dot, w, w_rel, MU, R, L, C)
+    loss = power_loss(model, eps, eps_dot, gamma_dot, w, w_rel, MU, R, L, C)
     assert math.isfinite(loss)
     assert loss >= 0.0
-    f_r, f_t = film_force_components(model, eps, eps_dot, gamma_dot, w, MU, R, L, C)
+    f_r, f_t = components(model, eps, eps_dot, gamma_dot, w, MU, R, L, C)
     assert math.isfinite(f_r) and math.isfinite(f_t)
     if eps_dot >= 0.0:
         assert f_r <= 0.0  # an approaching (or steady) journal is never pulled to the wall

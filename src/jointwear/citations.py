@@ -101,6 +101,23 @@ REFERENCES: dict[str, str] = {
         "B.J. Hamrock, S.R. Schmid, B.O. Jacobson, Fundamentals of Fluid Film Lubrication, "
         "2nd ed., Marcel Dekker, New York (2004)"
     ),
+    "childs1977": (
+        'D. Childs, H. Moes, H. van Leeuwen, "Journal bearing impedance descriptions for '
+        'rotordynamic applications", Journal of Lubrication Technology 99 (1977) 198-210'
+    ),
+    "raimondi1958": (
+        'A.A. Raimondi, J. Boyd, "A solution for the finite journal bearing and its '
+        'application to analysis and design", ASLE Transactions 1 (1958) 159-209'
+    ),
+    "greenwood1970": (
+        'J.A. Greenwood, J.H. Tripp, "The contact of two nominally flat rough surfaces", '
+        "Proceedings of the Institution of Mechanical Engineers 185 (1970-71) 625-633"
+    ),
+    "patir1978": (
+        'N. Patir, H.S. Cheng, "An average flow model for determining effects of '
+        'three-dimensional roughness on partial hydrodynamic lubrication", Journal of '
+        "Lubrication Technology 100 (1978) 12-17"
+    ),
     "baumgarte1972": (
         'J. Baumgarte, "Stabilization of constraints and integrals of motion in dynamical '
         'systems", Computer Methods in Applied Mechanics and Engineering 1 (1972) 1-16'

@@ -42,17 +42,15 @@ class Contacts:
     """
 
     def __init__(self, system: System, snapshots: int, laws: dict[str, NamedTuple]) -> None:
-        self.kinds: dict[str, KindArrays] = {
-            kind.name: KindArrays(
+        self.kinds: dict[str, KindArrays] = {}
+        for kind in KINDS:
+            rows = system.elements[kind.name]
+            lookups = {"lookups": rows.lookups} if rows.lookups.shape[1] else {}
+            self.kinds[kind.name] = KindArrays(
                 *kind.module.make_tables(
-                    system.elements[kind.name].ints,
-                    system.elements[kind.name].params,
-                    snapshots,
-                    laws[kind.name],
+                    rows.ints, rows.params, snapshots, laws[kind.name], **lookups
                 )
             )
-            for kind in KINDS
-        }
 
     def _tuple(self, cls: type, part: str) -> NamedTuple:
         absent = to_struct(no_elements())

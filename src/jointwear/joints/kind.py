@@ -11,7 +11,9 @@ a kind. A kind gives:
    ``model.tables.JointTable`` with ``type``, ``kind``, the ideal joint's ``JointKind``, and
    ``clearance``, a ``model.clearance.ClearanceTable``); ``kernel``: its compiled module.
 2. ``row(joint, model, bodies, angle0)``: its row of the kernel tables (integers and SI
-   parameters); ``start_problems``: why a joint cannot start from the assembled pose.
+   parameters); ``lookup(joint)``: a flat table its kernel also reads (the finite journal
+   bearing's film), passed to ``make_tables`` as ``lookups`` when some joint has one;
+   ``start_problems``: why a joint cannot start from the assembled pose.
 3. ``columns(joint)``: its time-series columns (without the joint's name);
    ``derived_columns``: those computed from them after the run (they follow them);
    ``unit(quantity)``: the unit of each.
@@ -133,6 +135,10 @@ class ClearanceKind:
         body's initial angle minus the first's [rad].
         """
         raise NotImplementedError
+
+    def lookup(self, joint: Any) -> NDArray[np.float64]:
+        """Data the kernel reads for ``joint`` beyond its row (a flat table); none by default."""
+        return np.zeros(0)
 
     def start_problems(
         self, joint: Any, model: Any, place: Callable[[str, tuple[float, float]], NDArray]

@@ -90,6 +90,7 @@ class ElementRows(NamedTuple):
 
     ints: NDArray[np.int64]  # (n, N_INTS)
     params: NDArray[np.float64]  # (n, N_PARAMS) [SI]
+    lookups: NDArray[np.float64]  # (n, longest) each row's ``lookup``, zero-padded; (n, 0): none
 
 
 class System(NamedTuple):
@@ -234,7 +235,9 @@ def _joint_tables(
         if joint.clearance is not None and not ideal:
             kind = BY_NAME[joint.type]
             bodies = (poses.index[b1], poses.index[b2])
-            elements[kind.name].append(kind.row(joint, model, bodies, angle0))
+            elements[kind.name].append(
+                (*kind.row(joint, model, bodies, angle0), kind.lookup(joint))
+            )
             continue
         axis = np.array(getattr(joint, "axis", (1.0, 0.0)), dtype=float)
         kernel_index[joint.name] = len(joints["kind"])
@@ -408,15 +411,21 @@ def build_system(model: Model, *, ideal: bool = False) -> System:
 
 
 def _element_rows(rows: dict[str, list]) -> dict[str, ElementRows]:
-    """Each kind's rows as arrays (``KIND.row`` gives one joint's)."""
+    """Each kind's rows as arrays (``KIND.row`` and ``KIND.lookup`` give one joint's)."""
     tables = {}
     for kind in KINDS:
         module = kind.module
         ints = [r[0] for r in rows[kind.name]]
         params = [r[1] for r in rows[kind.name]]
+        lookups = [r[2] for r in rows[kind.name]]
+        longest = max((len(lookup) for lookup in lookups), default=0)
+        padded = np.zeros((len(lookups), longest))
+        for i, lookup in enumerate(lookups):
+            padded[i, : len(lookup)] = lookup
         tables[kind.name] = ElementRows(
             ints=_table(ints, (module.N_INTS,), np.int64),
             params=_table(params, (module.N_PARAMS,), np.float64),
+            lookups=padded,
         )
     return tables
 

@@ -18,6 +18,7 @@ import numpy as np
 from numpy.typing import NDArray
 from typing_extensions import override
 
+from ...model.laws.lubrication import reads_film_table
 from ..kind import (
     PENETRATION_SHARES,
     STATE_FIELDS,
@@ -50,6 +51,12 @@ UNITS = {
     "film_fy": "N",
     "film_torque": "N m",
     "film_power": "W",
+    "asperity_fn": "N",  # load the asperities carry (mixed film), part of fn
+    "squeeze_vx": "m/s",  # the film's squeeze velocity V = de/dt - (w / 2) z x e
+    "squeeze_vy": "m/s",
+    "asperity_share": "1",  # fn / (fn + |film force|)
+    "friction_coefficient": "1",  # (boundary + viscous friction power) / (load x sliding speed)
+    "lambda": "1",  # film thickness / roughness
     "p_max": "Pa",  # Hertz line contact's peak and mean pressure (tribology.py)
     "p_mean": "Pa",
     "pv": "Pa m/s",
@@ -147,11 +154,24 @@ class RevoluteKind(ClearanceKind):
         param[jc.P_ESTAR] = clearance.contact_modulus
         param[jc.P_MIN_SPEED] = clearance.min_impact_speed
         param[jc.P_TOL] = clearance.contact_tolerance
-        param[[jc.P_VISCOSITY, jc.P_BREAKDOWN]] = laws["lubrication"].parameters
+        film = [jc.P_VISCOSITY, jc.P_BREAKDOWN, jc.P_ROUGHNESS, jc.P_ASPERITY]
+        param[film] = laws["lubrication"].parameters
+        param[jc.P_ASPERITY] *= clearance.contact_modulus  # Greenwood-Tripp's E' is E*
         ranges = clearance.law_ranges()
         param[jc.P_DEPTH_LIMIT] = ranges[PENETRATION]
         param[jc.P_PATCH_LIMIT] = ranges.get(HERTZ_PATCH, 0.0)  # 0: the patch is not checked
         return ints, param
+
+    @override
+    def lookup(self, joint: object) -> NDArray[np.float64]:
+        """The finite bearing's impedance table for the joint's L/D, flat; else none."""
+        clearance = joint.clearance
+        if not reads_film_table(clearance.lubrication):
+            return np.zeros(0)
+        from ...film.impedance import impedance_table
+
+        width_over_diameter = clearance.width / (2.0 * clearance.journal_radius)
+        return impedance_table(width_over_diameter)
 
     @override
     def columns(self, joint: object) -> tuple[str, ...]:
@@ -193,7 +213,7 @@ class RevoluteKind(ClearanceKind):
             rows.append((f"Hertz half-width b at {force:g} N", b * 1e3, "mm"))
             rows.append((f"Hertz peak pressure at {force:g} N", p_max / 1e6, "MPa"))
         cells = f"sectors per surface ({clearance.wear_distribution})"
-        return [*rows, (cells, clearance.sectors, "")]
+        return [*rows, *_film_rows(clearance), (cells, clearance.sectors, "")]
 
     @override
     def wear_rows(self, joint: object, wear: NDArray[np.float64]) -> list[tuple]:
@@ -230,6 +250,7 @@ class RevoluteKind(ClearanceKind):
         }
         if c.lubricated:
             entry["energy_dissipated_film_j"] = float(totals[jc.T_FILM_ENERGY])
+            entry["film"] = _film_summary(jc, c, totals, duration)
         for s, surface in enumerate(SURFACES):
             depth, peak = deepest(wear[s, : c.sectors])
             entry[f"max_wear_depth_{surface}_m"] = depth
@@ -270,6 +291,56 @@ class RevoluteKind(ClearanceKind):
             f"the journal would be worn {journal * 1e3:.4g} mm deep {when}, through its radius "
             f"{c.journal_radius * 1e3:.4g} mm"
         )
+
+
+def _film_rows(c: object) -> list[tuple]:
+    """``check`` rows of a mixed film: its L/D, and where and how the asperities take over."""
+    if not getattr(c, "roughness", None):
+        return []
+    from ...kernels.laws.asperity import ASPERITY_START, asperity_load
+    from ...model.laws.lubrication import asperity_constant
+
+    scale = asperity_constant(c.roughness_parameter, c.asperity_slope) * c.contact_modulus
+    touching = asperity_load(0.0, c.roughness, scale, c.relative_radius, c.width)
+    return [
+        ("film width / diameter L/D", c.width / (2.0 * c.journal_radius), ""),
+        ("roughness sigma", c.roughness * 1e6, "um"),
+        ("asperities touch below film thickness", ASPERITY_START * c.roughness * 1e6, "um"),
+        (
+            "  i.e. above eccentricity ratio",
+            1.0 - ASPERITY_START * c.roughness / c.radial_clearance,
+            "",
+        ),
+        ("asperity load at film thickness 0", touching / 1e3, "kN"),
+    ]
+
+
+def _film_summary(jc: object, c: object, totals: NDArray[np.float64], duration: float) -> dict:
+    """What a tribologist reads of a lubricated joint over ``duration`` [s] (its totals).
+
+    The thinnest film from the largest eccentricity ratio (in the unworn clearance); lambda
+    is it over the roughness; the asperities' share of the load carried (time integrals of
+    the solid contact's normal force and of the film force's magnitude); the friction
+    coefficient, boundary plus viscous friction energy over the integral of load x sliding
+    speed; the Hersey number mu N / P with the mean relative speed N [rev/s] and the mean
+    load carried over the projected area L 2 R_J [Pa]; the mean friction power of each kind.
+    """
+    thinnest = c.radial_clearance * (1.0 - float(totals[jc.T_FILM_MAX]))
+    solid, film = float(totals[jc.T_SOLID_IMPULSE]), float(totals[jc.T_FILM_IMPULSE])
+    boundary, viscous = float(totals[jc.T_FRICTION_ENERGY]), float(totals[jc.T_FILM_ENERGY])
+    moved = float(totals[jc.T_LOAD_SLIDING])
+    speed = float(totals[jc.T_SPIN]) / (2.0 * math.pi * duration) if duration else 0.0
+    pressure = (solid + film) / duration / (c.width * 2.0 * c.journal_radius) if duration else 0.0
+    roughness = getattr(c, "roughness", None)
+    return {
+        "min_film_thickness_m": thinnest,
+        "min_lambda": thinnest / roughness if roughness else None,
+        "asperity_load_share": solid / (solid + film) if solid + film > 0.0 else 0.0,
+        "friction_coefficient": (boundary + viscous) / moved if moved > 0.0 else None,
+        "hersey_number": c.viscosity * speed / pressure if pressure > 0.0 else None,
+        "friction_power_boundary_w": boundary / duration if duration else 0.0,
+        "friction_power_viscous_w": viscous / duration if duration else 0.0,
+    }
 
 
 def _outside_ranges(jc: object, c: object, row: NDArray[np.float64], duration: float) -> dict:

@@ -15,6 +15,17 @@ From each row's normal and friction force and sliding speed (the joint's own col
   loop sums the same product into the summary's ``energy_dissipated_damping_j``). While F_n
   is clamped at zero with the surfaces still overlapping, it is the elastic energy released,
   F_elastic |d(delta)/dt|.
+
+A lubricated joint also has, from its film columns:
+
+- ``<joint>_asperity_share`` [-]: the solid contact's share of the load, F_n / (F_n +
+  |F_film|) (0 while neither carries any);
+- ``<joint>_friction_coefficient`` [-]: the friction power, boundary (friction_power) plus
+  viscous (film_power), over the whole load |F_n n + F_t t + F_film| times the sliding speed
+  R_J |omega_J - omega_B|: for a steadily loaded bearing, the classic T_J / (R W). NaN where
+  the journal does not turn in its bearing or nothing is loaded;
+- ``<joint>_lambda`` [-] (with a roughness sigma): the film thickness over sigma, -delta /
+  sigma, negative where the mean planes overlap.
 """
 
 from __future__ import annotations
@@ -23,6 +34,7 @@ import numpy as np
 import pandas as pd
 
 COLUMNS = ("p_max", "p_mean", "pv", "friction_power", "damping_power")  # after the joint's own
+FILM_COLUMNS = ("asperity_share", "friction_coefficient")  # a lubricated joint's, then lambda
 
 
 def tribology_columns(joint: object, timeseries: pd.DataFrame) -> dict[str, np.ndarray]:
@@ -40,10 +52,38 @@ def tribology_columns(joint: object, timeseries: pd.DataFrame) -> dict[str, np.n
     mean[loaded] = force[loaded] / (2.0 * half_width[loaded] * c.width)
     elastic = timeseries[f"{name}_fn_elastic"].to_numpy()  # > 0 while they overlap
     rate = timeseries[f"{name}_delta_dot"].to_numpy()
-    return {
+    friction_power = np.abs(timeseries[f"{name}_ft"].to_numpy()) * speed
+    columns = {
         f"{name}_p_max": peak,
         f"{name}_p_mean": mean,
         f"{name}_pv": mean * speed,
-        f"{name}_friction_power": np.abs(timeseries[f"{name}_ft"].to_numpy()) * speed,
+        f"{name}_friction_power": friction_power,
         f"{name}_damping_power": np.where(elastic > 0.0, (force - elastic) * rate, 0.0),
     }
+    if c.lubricated:
+        columns |= _film_columns(joint, timeseries, friction_power)
+    return columns
+
+
+def _film_columns(
+    joint: object, timeseries: pd.DataFrame, friction_power: np.ndarray
+) -> dict[str, np.ndarray]:
+    """A lubricated joint's ``FILM_COLUMNS`` (and lambda), one value per row."""
+    c, name = joint.clearance, joint.name
+    column = {q: timeseries[f"{name}_{q}"].to_numpy() for q in
+              ("fn", "fx", "fy", "film_fx", "film_fy", "film_power", "delta")}  # fmt: skip
+    film = np.hypot(column["film_fx"], column["film_fy"])
+    carried = column["fn"] + film
+    share = np.divide(column["fn"], carried, out=np.zeros_like(carried), where=carried > 0.0)
+    spin = [timeseries[f"omega_{body}"].to_numpy() if body != "ground" else 0.0
+            for body in joint.bodies]  # fmt: skip
+    sliding = c.journal_radius * np.abs(spin[1] - spin[0]) * np.ones(len(timeseries))
+    load = np.hypot(column["fx"] + column["film_fx"], column["fy"] + column["film_fy"])
+    moved = load * sliding
+    power = friction_power + column["film_power"]
+    coefficient = np.divide(power, moved, out=np.full_like(moved, np.nan), where=moved > 0.0)
+    columns = {f"{name}_asperity_share": share, f"{name}_friction_coefficient": coefficient}
+    roughness = getattr(c, "roughness", None)
+    if roughness:
+        columns[f"{name}_lambda"] = -column["delta"] / roughness
+    return columns

@@ -27,6 +27,7 @@ import numpy as np
 from numba import njit
 
 from ..kinematics import angular_velocity
+from ..laws.asperity import asperity_energy, asperity_load, mean_gap
 from ..laws.foundation import foundation_load, foundation_points, spread_foundation_wear
 from ..laws.lubrication import film_force_components, film_power_loss, film_torques
 from ..laws.normal import ElasticLaw
@@ -95,7 +96,9 @@ P_VISCOSITY = 21  # lubricant's dynamic viscosity [Pa s]
 P_BREAKDOWN = 22  # eccentricity ratio where the film hands over to solid contact [-]
 P_DEPTH_LIMIT = 23  # the elastic law's range: penetration / c [-] (its record's)
 P_PATCH_LIMIT = 24  # the Hertz patch's range: b / R_J [-]; 0: no law here uses the patch
-N_PARAMS = 25
+P_ROUGHNESS = 25  # combined RMS roughness sigma [m]; 0: no asperity contact (film_breakdown)
+P_ASPERITY = 26  # Greenwood-Tripp pressure scale K E' [Pa]
+N_PARAMS = 27
 
 # Columns of JournalScratch.contact (the last evaluation).
 C_EX = 0  # eccentricity [m]
@@ -117,7 +120,10 @@ C_FILM_Y = 15
 C_FILM_POWER = 16  # power dissipated in the film [W]
 C_FILM_TJ = 17  # film's shear torque on the journal [N m]
 C_FILM_TB = 18  # film's shear torque on the bearing [N m]
-N_CONTACT = 19
+C_ASPERITY = 19  # load the asperities carry (in C_FN) [N]
+C_SQUEEZE_X = 20  # squeeze velocity V = de/dt - (w / 2) z x e, global [m/s]
+C_SQUEEZE_Y = 21
+N_CONTACT = 22
 OUTPUTS = (
     C_FX,
     C_FY,
@@ -136,8 +142,14 @@ OUTPUT_NAMES = (
     *("fx", "fy", "ex", "ey", "delta", "fn", "ft", "vt", "theta_bearing", "theta_journal"),
     *("delta_dot", "fn_elastic"),
 )  # the time-series columns of OUTPUTS, in order
-FILM_OUTPUTS = (C_EPS, C_FILM_MIN, C_FILM_X, C_FILM_Y, C_FILM_TJ, C_FILM_POWER)  # lubricated
-FILM_OUTPUT_NAMES = ("eps", "film_min", "film_fx", "film_fy", "film_torque", "film_power")
+FILM_OUTPUTS = (
+    *(C_EPS, C_FILM_MIN, C_FILM_X, C_FILM_Y, C_FILM_TJ, C_FILM_POWER),
+    *(C_ASPERITY, C_SQUEEZE_X, C_SQUEEZE_Y),
+)  # lubricated
+FILM_OUTPUT_NAMES = (
+    *("eps", "film_min", "film_fx", "film_fy", "film_torque", "film_power"),
+    *("asperity_fn", "squeeze_vx", "squeeze_vy"),
+)
 
 # Columns of JournalLog.totals.
 T_CONTACT_TIME = 0  # time with a positive normal force [s]
@@ -155,7 +167,11 @@ T_DEPTH_TIME = 11  # time the penetration exceeded the law's range [s]
 T_DEPTH_MAX = 12  # largest penetration / c [-]
 T_FILM_TIME = 13  # time the eccentricity ratio exceeded the film's range [s]
 T_FILM_MAX = 14  # largest eccentricity ratio [-]
-N_TOTALS = 15
+T_SOLID_IMPULSE = 15  # integral of the solid (asperity and bulk) normal force [N s]
+T_FILM_IMPULSE = 16  # integral of the film force's magnitude [N s]
+T_LOAD_SLIDING = 17  # integral of the whole load x R_J |w_rel| [N m]
+T_SPIN = 18  # integral of |w_rel|, the relative angle turned [rad]
+N_TOTALS = 19
 
 # Columns of an onset's entry in the impact log.
 IMPACT_SPEED = 0  # penetration rate at onset [m/s]
@@ -173,6 +189,7 @@ class JournalTable(NamedTuple):
 
     ints: np.ndarray  # (nc, N_INTS) int64
     params: np.ndarray  # (nc, N_PARAMS)
+    lookups: np.ndarray  # (nc, size): each row's finite-bearing impedance table (film.impedance)
     user: UserLaws | NoUserLaws  # the rows' laws registered from Python
 
 
@@ -202,16 +219,24 @@ def make_tables(
     params: np.ndarray,
     snapshots: int,
     user: UserLaws | NoUserLaws | None = None,
+    lookups: np.ndarray | None = None,
 ) -> tuple[JournalTable, JournalState, JournalLog, JournalScratch]:
     """Allocate a run's arrays for the joints of ``ints`` and ``params``, unworn (Python).
 
-    ``user``: the rows' user laws (``laws.user``); None: no row has one.
+    ``user``: the rows' user laws (``laws.user``); None: no row has one. ``lookups``: each
+    row's impedance table, flat (``film.impedance``); None: no row has a finite bearing.
     """
     user = NoUserLaws(rows=ints.shape[0]) if user is None else user
     nc = ints.shape[0]
+    lookups = np.zeros((nc, 0)) if lookups is None else lookups
     sectors = int(ints[:, I_SECTORS].max(initial=1))
     return (
-        JournalTable(ints=ints.astype(np.int64), params=params.astype(np.float64), user=user),
+        JournalTable(
+            ints=ints.astype(np.int64),
+            params=params.astype(np.float64),
+            lookups=np.ascontiguousarray(lookups, dtype=np.float64),
+            user=user,
+        ),
         JournalState(
             contact_on=np.zeros(nc, dtype=np.int64),
             impact_speed=np.zeros(nc),
@@ -275,25 +300,30 @@ def evaluate(table, state, scratch, k, q, qd):
     if law[I_LUBRICATION]:
         w_j, w_b = angular_velocity(qd, ij), angular_velocity(qd, ib)
         gamma_dot = (nx * dey - ny * dex) / e if e > 0.0 else 0.0
+        out[C_SQUEEZE_X] = dex + 0.5 * (w_j + w_b) * ey
+        out[C_SQUEEZE_Y] = dey - 0.5 * (w_j + w_b) * ex
         speeds = (delta_dot, gamma_dot, w_j + w_b, w_j - w_b)
-        _film(law, p, out, e, gap, delta, nx, ny, *speeds)
-    if delta <= 0.0:
+        _film(table, k, out, e, gap, delta, nx, ny, *speeds)
+    asperity = out[C_ASPERITY]  # > 0 only in a mixed film: the asperities touch
+    if delta <= 0.0 and asperity == 0.0:
         return
-    impact_speed = max(delta_dot, p[P_MIN_SPEED])  # until the loop records the onset
-    if state.contact_on[k]:
-        impact_speed = state.impact_speed[k]
-    if not foundation:
-        elastic = elastic_force(
-            table.user, k, law[I_NORMAL], delta, p[P_K], p[P_EXP], p[P_ESTAR], p[P_C],
-            p[P_WIDTH],
-        )  # fmt: skip
-    f_n = damped(table.user, k, elastic, delta_dot, impact_speed, law[I_DAMPING], p[P_CE])
+    f_n = asperity
+    if delta > 0.0:
+        impact_speed = max(delta_dot, p[P_MIN_SPEED])  # until the loop records the onset
+        if state.contact_on[k]:
+            impact_speed = state.impact_speed[k]
+        if not foundation:
+            elastic = elastic_force(
+                table.user, k, law[I_NORMAL], delta, p[P_K], p[P_EXP], p[P_ESTAR], p[P_C],
+                p[P_WIDTH],
+            )  # fmt: skip
+        f_n += damped(table.user, k, elastic, delta_dot, impact_speed, law[I_DAMPING], p[P_CE])
     f_t = tangential_force(
         table.user, k, law[I_FRICTION], v_t, f_n, p[P_CF], p[P_F0], p[P_F1], p[P_F2]
     )
     out[C_FN] = f_n
     out[C_FT] = f_t
-    out[C_ELASTIC] = elastic
+    out[C_ELASTIC] = elastic + asperity
     out[C_FX] = -f_n * nx - f_t * ny
     out[C_FY] = -f_n * ny + f_t * nx
 
@@ -314,34 +344,49 @@ def _line_of_centres(ex, ey, dex, dey):
 
 
 @njit(cache=True, no_cpython_wrapper=True)
-def _film(law, p, out, e, gap, delta, nx, ny, delta_dot, gamma_dot, w, w_rel):
-    """Film force, shear torques and power of a lubricated joint into out (C_EPS, C_FILM_*).
+def _film(table, k, out, e, gap, delta, nx, ny, delta_dot, gamma_dot, w, w_rel):
+    """Film force, shear torques and power of a lubricated joint k into out (C_EPS, C_FILM_*).
 
     e, gap [m]: eccentricity and local clearance; (nx, ny): line of centres; delta_dot [m/s]:
     its rate of approach; w, w_rel [rad/s]: sum and difference of the journal's and bearing's
-    angular speeds. Up to the eccentricity ratio eps_b (``P_BREAKDOWN``) the film carries the
-    journal alone. Beyond it the film is that at eps_b with the current rates (the formulas
-    grow without bound towards eps = 1), and
-    once the surfaces touch it fades out as the penetration grows from 0 to (1 - eps_b) c,
-    by the smooth step 1 - 3 x^2 + 2 x^3, while the solid contact takes over: the force is
+    angular speeds.
+
+    Mixed (a roughness sigma > 0): the asperities carry ``asperity_load`` (into C_ASPERITY)
+    where the gap h = -delta closes to a few sigma, and the film sees the rough surfaces'
+    mean gap (``mean_gap``), which stays positive, so film and asperities share the load and
+    no setting decides the hand-over.
+
+    Without roughness (the short and long bearings): up to the eccentricity ratio eps_b
+    (``P_BREAKDOWN``) the film carries the journal alone. Beyond it the film is that at eps_b
+    with the current rates (the formulas grow without bound towards eps = 1), and once the
+    surfaces touch it fades out as the penetration grows from 0 to (1 - eps_b) c, by the
+    smooth step 1 - 3 x^2 + 2 x^3, while the solid contact takes over: the force is
     continuous throughout, and the surfaces wear only while they touch.
     """
-    breakdown = p[P_BREAKDOWN]
+    law = table.ints[k]
+    p = table.params[k]
     out[C_EPS] = e / gap
     out[C_FILM_MIN] = max(0.0, -delta)
+    roughness = p[P_ROUGHNESS]
     weight = 1.0
-    if delta > 0.0:
-        x = min(1.0, delta / ((1.0 - breakdown) * gap))
-        weight = 1.0 - x * x * (3.0 - 2.0 * x)
-    if weight == 0.0:
-        return
-    args = (min(e / gap, breakdown), delta_dot / gap, gamma_dot, w)
+    if roughness > 0.0:
+        out[C_ASPERITY] = asperity_load(-delta, roughness, p[P_ASPERITY], p[P_RSTAR], p[P_WIDTH])
+        eps = max(0.0, 1.0 - mean_gap(-delta, roughness) / gap)
+    else:
+        breakdown = p[P_BREAKDOWN]
+        if delta > 0.0:
+            x = min(1.0, delta / ((1.0 - breakdown) * gap))
+            weight = 1.0 - x * x * (3.0 - 2.0 * x)
+        if weight == 0.0:
+            return
+        eps = min(e / gap, breakdown)
+    args = (eps, delta_dot / gap, gamma_dot, w)
     fluid = (p[P_VISCOSITY], p[P_RJ], p[P_WIDTH], gap)
-    f_r, f_t = film_force_components(law[I_LUBRICATION], *args, *fluid)
+    f_r, f_t = film_force_components(law[I_LUBRICATION], table.lookups[k], *args, *fluid)
     out[C_FILM_X] = weight * (f_r * nx - f_t * ny)
     out[C_FILM_Y] = weight * (f_r * ny + f_t * nx)
-    out[C_FILM_POWER] = weight * film_power_loss(law[I_LUBRICATION], *args, w_rel, *fluid)
-    t_journal, t_bearing = film_torques(law[I_LUBRICATION], *args, w_rel, *fluid)
+    out[C_FILM_POWER] = weight * film_power_loss(f_r, f_t, *args, w_rel, *fluid)
+    t_journal, t_bearing = film_torques(f_t, eps, w_rel, *fluid)
     out[C_FILM_TJ] = weight * t_journal
     out[C_FILM_TB] = weight * t_bearing
 
@@ -470,6 +515,20 @@ def _track_ranges(law, p, c, totals, h):
 
 
 @njit(cache=True, no_cpython_wrapper=True)
+def _track_film(table, k, c, totals, qd, h):
+    """The film's energy and the integrals its summary needs, over a step of h [s]."""
+    totals[T_FILM_ENERGY] += c[C_FILM_POWER] * h
+    totals[T_FILM_IMPULSE] += math.hypot(c[C_FILM_X], c[C_FILM_Y]) * h
+    spin = abs(
+        angular_velocity(qd, table.ints[k, I_JOURNAL])
+        - angular_velocity(qd, table.ints[k, I_BEARING])
+    )
+    load = math.hypot(c[C_FX] + c[C_FILM_X], c[C_FY] + c[C_FILM_Y])
+    totals[T_LOAD_SLIDING] += load * table.params[k, P_RJ] * spin * h
+    totals[T_SPIN] += spin * h
+
+
+@njit(cache=True, no_cpython_wrapper=True)
 def _beyond(totals, time_slot, max_slot, value, limit, h):
     totals[max_slot] = max(totals[max_slot], value)
     if value > limit:
@@ -501,7 +560,9 @@ def accumulate(table, state, scratch, log, t_old, t_new, q_mid, qd_mid, snap_tim
                 table.user, k, table.ints[k, I_FRICTION], c[C_VT], p[P_F0], p[P_F1], p[P_F2]
             )
             totals[T_SLIDING] += sliding_speed * h
-        totals[T_FILM_ENERGY] += c[C_FILM_POWER] * h
+        totals[T_SOLID_IMPULSE] += c[C_FN] * h
+        if table.ints[k, I_LUBRICATION]:
+            _track_film(table, k, c, totals, qd_mid, h)
         _track_ranges(table.ints[k], table.params[k], c, totals, h)
         t_from = t_old
         s = first
@@ -543,8 +604,11 @@ def elastic_energy(table, scratch):
     energy = 0.0
     for k in range(table.ints.shape[0]):
         p = table.params[k]
+        delta = scratch.contact[k, C_DELTA]
         energy += law_energy(
-            table.user, k, table.ints[k, I_NORMAL], scratch.contact[k, C_DELTA], p[P_K],
-            p[P_EXP], p[P_ESTAR], p[P_C], p[P_WIDTH],
+            table.user, k, table.ints[k, I_NORMAL], delta, p[P_K], p[P_EXP], p[P_ESTAR],
+            p[P_C], p[P_WIDTH],
         )  # fmt: skip
+        if p[P_ROUGHNESS] > 0.0:
+            energy += asperity_energy(-delta, p[P_ROUGHNESS], p[P_ASPERITY], p[P_RSTAR], p[P_WIDTH])
     return energy

@@ -26,29 +26,24 @@ it is 1.5 % to 11.4 % short of F_5/2 for -1 <= lam <= 2, and further in the tail
 lam = 2.5, -74 % at 3, -98 % at 3.5, at most 5e-4 in absolute terms (0.08 % of F_5/2(0))
 (docs/theory.md; benchmarks/asperity_fit.py).
 
-Load. The load a journal's asperities carry needs no fit. Across the contact the gap is
-h(x) = h_min + x^2 / (2 R*) (the circles' gap to order (x / R)^2), so with u = x / sqrt(2 R*
-sigma), lam(u) = lam_min + u^2 and F_5/2 written as its defining integral,
+Load. Across the contact the gap is h(x) = h_min + x^2 / (2 R*) (the circles' gap to order
+(x / R)^2), so with u = x / sqrt(2 R* sigma) and lam(u) = lam_min + u^2 the fit integrates in
+closed form: with a^2 = 4 - lam_min, int A (a^2 - u^2)_+^m du = A B(1/2, m + 1) a^(2m + 1), so
 
-    int F_5/2(lam_min + u^2) du = int phi(s) int (s - lam_min - u^2)_+^(5/2) du ds
-                                = B(1/2, 7/2) F_3(lam_min),
+    W = L int p_a dx = L k_gt E' sqrt(2 R* sigma) A B(1/2, m + 1) (4 - lam_min)^(m + 1/2),
 
-because int (a^2 - u^2)_+^(5/2) du = B(1/2, 7/2) a^6. B(1/2, 7/2) = 5 pi / 16, and the integer
-moments are elementary: with Q = erfc(lam / sqrt 2) / 2 and phi = exp(-lam^2 / 2) / sqrt(2 pi),
-F_0 = Q, F_1 = phi - lam Q and F_(n+1) = n F_(n-1) - lam F_n (integration by parts). So
-
-    W = L int p_a dx = (5 pi / 16) L k_gt E' sqrt(2 R* sigma) F_3(h_min / sigma),
-
-exact for the parabolic gap, smooth, for every h_min (negative: the mean planes overlap), and
-dW/dh_min = -(15 pi / 16) L k_gt E' sqrt(2 R* / sigma) F_2 < 0. Against the circles' exact gap
-(R_B - e cos a - sqrt(R_J^2 - e^2 sin^2 a) along the bearing's radius) it is within
-(|lam_min| / 2 + 1/2) sigma / c: the gap's curvature at eccentricity e is e (R_J + e) /
-(R_J R_B^2), 1 / R* only at e = c, which accounts for lam_min sigma / (2 c); passing that
-curvature's radius as r_star leaves terms of order R* sigma / R^2 ~ sigma / c, measured below
-0.3 sigma / c. The same substitution gives
-the pressure's second moment across the contact, int x^2 p_a dx / int p_a dx = R* sigma F_4 /
-(4 F_3) (with B(3/2, 7/2) / B(1/2, 7/2) = 1/8); ``asperity_half_width`` is the half-width of the
-Hertz ellipse with that moment, sqrt(R* sigma F_4 / F_3), for spreading the wear.
+A = 4.4086e-5, m = 6.804, for lam_min < 4 (h_min may be negative: the mean planes overlap),
+and 0 beyond, where no asperity of the fit reaches across: the asperities touch from
+lam_min = 4 on, with the load and its first six derivatives rising from 0. Its potential is
+U = int_h_min^(4 sigma) W dh = sigma (4 - lam_min) W / (m + 3/2). The fit carries its own
+error into W: against the Gaussian load, W(lam) = (5 pi / 16) L k_gt E' sqrt(2 R* sigma)
+F_3(lam) exactly (int F_5/2(lam + u^2) du = B(1/2, 7/2) F_3(lam), F_3 elementary), it is 3 to
+16 % short for -1 <= lam <= 2 and further in the tail
+(tests/test_asperity.py): within the spread of the asperity data themselves (eta sigma beta
+0.03 to 0.05 moves W by a factor 2.8). Against the circles' exact gap (R_B - e cos a -
+sqrt(R_J^2 - e^2 sin^2 a) along the bearing's radius) the parabola is within (|lam_min| / 2 +
+1/2) sigma / c: the gap's curvature at eccentricity e is e (R_J + e) / (R_J R_B^2), 1 / R*
+only at e = c.
 
 Mean gap. The expected local film thickness between two surfaces of combined Gaussian
 roughness sigma at mean-plane separation h is E[max(h - z, 0)] = sigma (lam Phi(lam) +
@@ -74,11 +69,13 @@ from numba import njit
 
 _FIT_SCALE = 4.4086e-5  # Hu et al. (1994)
 _FIT_EXPONENT = 6.804
-_FIT_END = 4.0  # lam beyond which the fit is 0
-_BETA_HALF_SEVEN_HALVES = 5.0 * math.pi / 16.0  # B(1/2, 7/2) = Gamma(1/2) Gamma(7/2) / Gamma(4)
+_FIT_END = 4.0  # lam beyond which the fit is 0: the asperities touch from there on
+_FIT_ACROSS = (
+    _FIT_SCALE * math.gamma(0.5) * math.gamma(_FIT_EXPONENT + 1.0) / math.gamma(_FIT_EXPONENT + 1.5)
+)  # A B(1/2, m + 1): the fit integrated across the parabolic gap
+ASPERITY_START = _FIT_END  # the film thickness / sigma below which the asperities touch [-]
 _INV_SQRT_2PI = 1.0 / math.sqrt(2.0 * math.pi)
 _INV_SQRT_2 = 1.0 / math.sqrt(2.0)
-_LAM_APART = 20.0  # beyond it F_3 < 1e-92 and the recurrence loses digits: no contact
 
 
 @njit(cache=True)
@@ -98,66 +95,52 @@ def asperity_pressure(h: float, sigma: float, k_gt: float, e_prime: float) -> fl
     """Greenwood-Tripp asperity pressure p_a = k_gt E' F_5/2(h / sigma) [Pa].
 
     h [m] is the local mean-plane separation, sigma [m] the combined roughness, k_gt [-] the
-    constant of ``film.asperity.asperity_constant``, e_prime [Pa] the contact modulus E*.
+    constant of ``model.laws.lubrication.asperity_constant``, e_prime [Pa] the contact modulus E*.
     """
     return k_gt * e_prime * f52(h / sigma)
 
 
 @njit(cache=True)
-def gaussian_moments(lam: float) -> tuple[float, float, float, float, float]:
-    """The Greenwood-Tripp integrals F_0 ... F_4 at lam [-], in closed form.
+def asperity_load(h_min: float, sigma: float, scale: float, r_star: float, width: float) -> float:
+    """Total asperity load W [N] on a journal with minimum mean-plane gap h_min [m].
 
-    F_n(lam) = (1/sqrt(2 pi)) int_lam^inf (s - lam)^n exp(-s^2 / 2) ds: F_0 = Q,
-    F_1 = phi - lam Q, F_(n+1) = n F_(n-1) - lam F_n, Q = erfc(lam / sqrt 2) / 2,
-    phi = exp(-lam^2 / 2) / sqrt(2 pi). The recurrence cancels digits for large lam: relative
-    error below 1e-10 (F_1) and 1e-4 (F_4) up to lam = 20; all underflow near lam = 38.
+    W = L scale sqrt(2 R* sigma) A B(1/2, m + 1) (4 - h_min / sigma)^(m + 1/2) for
+    h_min < 4 sigma, else 0: the fitted Greenwood-Tripp pressure integrated over the gap
+    h_min + x^2 / (2 R*) (module docstring). sigma [m]; scale = k_gt E' [Pa]; r_star,
+    width [m].
     """
-    f0 = 0.5 * math.erfc(lam * _INV_SQRT_2)
-    f1 = _INV_SQRT_2PI * math.exp(-0.5 * lam * lam) - lam * f0
-    f2 = f0 - lam * f1
-    f3 = 2.0 * f1 - lam * f2
-    f4 = 3.0 * f2 - lam * f3
-    return f0, f1, f2, f3, f4
+    reach = _FIT_END - h_min / sigma
+    if reach <= 0.0:
+        return 0.0
+    return (
+        width
+        * scale
+        * math.sqrt(2.0 * r_star * sigma)
+        * _FIT_ACROSS
+        * reach ** (_FIT_EXPONENT + 0.5)
+    )
 
 
 @njit(cache=True)
-def asperity_load(
-    h_min: float, sigma: float, k_gt: float, e_prime: float, r_star: float, width: float
-) -> float:
-    """Total asperity load [N] on a journal with minimum mean-plane gap h_min [m].
+def asperity_energy(h_min: float, sigma: float, scale: float, r_star: float, width: float) -> float:
+    """Elastic energy [J] the asperities store at minimum gap h_min [m] (arguments as the load).
 
-    W = (5 pi / 16) L k_gt E' sqrt(2 R* sigma) F_3(h_min / sigma): the Greenwood-Tripp
-    pressure integrated exactly over the gap h_min + x^2 / (2 R*) (module docstring); 0 for
-    h_min >= 20 sigma (F_3 < 1e-92 there). h_min may be negative (the mean planes overlap);
-    sigma [m], k_gt [-], e_prime [Pa], r_star [m], width [m].
+    U = int_h_min^(4 sigma) W dh = sigma (4 - h_min / sigma) W / (m + 3/2).
     """
-    lam = h_min / sigma
-    if lam >= _LAM_APART:
+    reach = _FIT_END - h_min / sigma
+    if reach <= 0.0:
         return 0.0
-    f3 = gaussian_moments(lam)[3]
-    return _BETA_HALF_SEVEN_HALVES * width * k_gt * e_prime * math.sqrt(2.0 * r_star * sigma) * f3
-
-
-@njit(cache=True)
-def asperity_half_width(h_min: float, sigma: float, r_star: float) -> float:
-    """Half-width [m] of the Hertz ellipse with the asperity pressure's second moment.
-
-    sqrt(R* sigma F_4 / F_3) at lam = h_min / sigma (module docstring); 0 where
-    ``asperity_load`` is (no load to spread). h_min, sigma, r_star [m].
-    """
-    lam = h_min / sigma
-    if lam >= _LAM_APART:
-        return 0.0
-    _, _, _, f3, f4 = gaussian_moments(lam)
-    return math.sqrt(r_star * sigma * f4 / f3)
+    load = asperity_load(h_min, sigma, scale, r_star, width)
+    return sigma * reach * load / (_FIT_EXPONENT + 1.5)
 
 
 @njit(cache=True)
 def mean_gap(h: float, sigma: float) -> float:
     """Expected local gap E[max(h - z, 0)] = sigma (lam Phi(lam) + phi(lam)) [m], lam = h / sigma.
 
-    z ~ N(0, sigma^2) is the combined roughness [m] (Patir and Cheng 1978's average gap),
-    sigma F_1(-lam): -> h for h >> sigma, -> 0 as h -> -inf, > 0 down to h = -38 sigma,
-    where it underflows.
+    z ~ N(0, sigma^2) is the combined roughness [m] (Patir and Cheng 1978's average gap):
+    -> h for h >> sigma, -> 0 as h -> -inf, > 0 down to h = -38 sigma, where it underflows.
     """
-    return sigma * gaussian_moments(-h / sigma)[1]
+    lam = h / sigma
+    below = 0.5 * math.erfc(-lam * _INV_SQRT_2)  # Phi(lam)
+    return sigma * (lam * below + _INV_SQRT_2PI * math.exp(-0.5 * lam * lam))

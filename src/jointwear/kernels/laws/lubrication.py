@@ -103,17 +103,21 @@ from enum import IntEnum
 import numpy as np
 from numba import njit
 
+from .impedance import finite_bearing_forces
+
 
 class FilmModel(IntEnum):
     """Codes of the lubrication laws (``model.laws.lubrication.LUBRICATION``).
 
     NONE is a dry joint (no film: the element never asks for one); the films approximate the
-    Reynolds equation for a short (L/D small) or a long (L/D large) bearing.
+    Reynolds equation for a short (L/D small) or a long (L/D large) bearing, or solve it for
+    the joint's L/D (``impedance``).
     """
 
     NONE = 0
     SHORT_BEARING = 1
     LONG_BEARING = 2
+    FINITE_BEARING = 3
 
 
 @njit(cache=True)
@@ -202,6 +206,7 @@ def long_bearing_forces(
 @njit(cache=True)
 def film_force_components(
     model: int,
+    table: np.ndarray,
     eps: float,
     eps_dot: float,
     gamma_dot: float,
@@ -213,41 +218,23 @@ def film_force_components(
 ) -> tuple[float, float]:
     """Film force (f_r, f_t) [N] on the journal by ``model`` (``FilmModel``).
 
-    (NaN, NaN) for a code without a film (a dry joint has none), never another film.
+    ``table``: the finite bearing's impedance table for the joint's L/D (``film.impedance``),
+    read by that law only. (NaN, NaN) for a code without a film (a dry joint has none),
+    never another film.
     """
     if model == FilmModel.SHORT_BEARING:
         return short_bearing_forces(eps, eps_dot, gamma_dot, w, mu, r, width, c)
     if model == FilmModel.LONG_BEARING:
         return long_bearing_forces(eps, eps_dot, gamma_dot, w, mu, r, width, c)
+    if model == FilmModel.FINITE_BEARING:
+        return finite_bearing_forces(table, eps, eps_dot, gamma_dot, w, mu, r, width, c)
     return np.nan, np.nan
 
 
 @njit(cache=True)
-def film_force(
-    model: int,
-    eps: float,
-    eps_dot: float,
-    gamma: float,
-    gamma_dot: float,
-    w: float,
-    mu: float,
-    r: float,
-    width: float,
-    c: float,
-) -> tuple[float, float]:
-    """Film force (f_x, f_y) [N] on the journal in global coordinates (the bearing gets minus it).
-
-    f_x = f_r cos gamma - f_t sin gamma, f_y = f_r sin gamma + f_t cos gamma.
-    """
-    f_r, f_t = film_force_components(model, eps, eps_dot, gamma_dot, w, mu, r, width, c)
-    cos_g = math.cos(gamma)
-    sin_g = math.sin(gamma)
-    return f_r * cos_g - f_t * sin_g, f_r * sin_g + f_t * cos_g
-
-
-@njit(cache=True)
 def film_power_loss(
-    model: int,
+    f_r: float,
+    f_t: float,
     eps: float,
     eps_dot: float,
     gamma_dot: float,
@@ -258,15 +245,14 @@ def film_power_loss(
     width: float,
     c: float,
 ) -> float:
-    """Viscous power dissipated in the film [W], never negative.
+    """Viscous power dissipated in the film [W] of film force (f_r, f_t) [N], never negative.
 
     Phi = 2 pi mu (R w_rel)^2 R L / (c sqrt(1 - eps^2))
           + c [eps (w - 2 gamma_dot) f_t / 2 - eps_dot f_r],
-    the Couette shear over the whole circumference plus the pressure flow of the pi-film,
-    int h^3 / (12 mu) |grad p|^2 dA in closed form (module docstring). w_rel =
-    omega_journal - omega_bearing [rad/s].
+    the Couette shear over the whole circumference plus the pressure flow, int h^3 / (12 mu)
+    |grad p|^2 dA = -F . V for any film whose pressure vanishes where it cavitates (module
+    docstring). w_rel = omega_journal - omega_bearing [rad/s].
     """
-    f_r, f_t = film_force_components(model, eps, eps_dot, gamma_dot, w, mu, r, width, c)
     u = r * w_rel
     couette = 2.0 * math.pi * mu * u * u * r * width / (c * math.sqrt(1.0 - eps * eps))
     pressure = c * (0.5 * eps * (w - 2.0 * gamma_dot) * f_t - eps_dot * f_r)
@@ -275,23 +261,14 @@ def film_power_loss(
 
 @njit(cache=True)
 def film_torques(
-    model: int,
-    eps: float,
-    eps_dot: float,
-    gamma_dot: float,
-    w: float,
-    w_rel: float,
-    mu: float,
-    r: float,
-    width: float,
-    c: float,
+    f_t: float, eps: float, w_rel: float, mu: float, r: float, width: float, c: float
 ) -> tuple[float, float]:
     """Shear torques of the film (on the journal, on the bearing) [N m].
 
     T_J = -T_c - c eps f_t / 2, T_B = T_c - c eps f_t / 2, T_c = 2 pi mu R^3 L w_rel /
-    (c sqrt(1 - eps^2)); w_rel = omega_journal - omega_bearing [rad/s] (module docstring).
+    (c sqrt(1 - eps^2)); f_t [N] the film force's tangential part; w_rel = omega_journal -
+    omega_bearing [rad/s] (module docstring).
     """
-    _, f_t = film_force_components(model, eps, eps_dot, gamma_dot, w, mu, r, width, c)
     couette = 2.0 * math.pi * mu * r**3 * width * w_rel / (c * math.sqrt(1.0 - eps * eps))
     offset = 0.5 * c * eps * f_t
     return -couette - offset, couette - offset
