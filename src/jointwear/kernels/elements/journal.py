@@ -371,7 +371,7 @@ def _film(table, k, out, e, gap, delta, nx, ny, delta_dot, gamma_dot, w, w_rel):
     weight = 1.0
     if roughness > 0.0:
         out[C_ASPERITY] = asperity_load(-delta, roughness, p[P_ASPERITY], p[P_RSTAR], p[P_WIDTH])
-        eps = max(0.0, 1.0 - mean_gap(-delta, roughness) / gap)
+        eps = max(0.0, 1.0 - mean_gap(max(-delta, 0.0), roughness) / gap)
     else:
         breakdown = p[P_BREAKDOWN]
         if delta > 0.0:
