@@ -13,7 +13,7 @@ import math
 import numpy as np
 import pytest
 from runs import EXAMPLES, whole_run
-from test_film_and_foundation_joints import C, MU, OMEGA, R_J, WIDTH, bearing_model, run
+from test_film_and_foundation_joints import MU, OMEGA, R_J, WIDTH, C, bearing_model, run
 
 import jointwear as jw
 from jointwear.film import impedance
