@@ -49,7 +49,7 @@ ring cut open at the inlet.
 References
 ----------
 D. Childs, H. Moes, H. van Leeuwen, "Journal bearing impedance descriptions for rotordynamic
-applications", J. Lubr. Technol. 99 (1977) 198-214.
+applications", J. Lubr. Technol. 99 (1977) 198-210.
 M. Hintermueller, K. Ito, K. Kunisch, "The primal-dual active set strategy as a semismooth
 Newton method", SIAM J. Optim. 13 (2003) 865-888.
 A.A. Raimondi, J. Boyd, "A solution for the finite journal bearing and its application to
