@@ -1,7 +1,7 @@
 """The finite journal bearing: Reynolds solver, impedance table and kernel.
 
 Independent answers: published steady tables (Raimondi and Boyd 1958, as transcribed in the
-sources named at each table), the short-bearing closed forms (Ocvirk for the wedge, the
+sources named in ``references.py``), the short-bearing closed forms (Ocvirk for the wedge, the
 cavitated half film for the squeeze), the long bearing with the Reynolds condition solved
 here with scipy, the dissipation integral of the solved field, symmetry and homogeneity.
 """
@@ -10,6 +10,7 @@ import math
 
 import numpy as np
 import pytest
+from references import RAIMONDI_BOYD, RAIMONDI_BOYD_EPS, RAIMONDI_BOYD_TABLE_LD1
 from scipy.integrate import quad
 from scipy.optimize import brentq
 
@@ -20,28 +21,6 @@ from jointwear.kernels.laws.impedance import film_impedance, finite_bearing_forc
 from jointwear.kernels.laws.lubrication import short_bearing_forces
 from jointwear.model import ModelError
 
-# Raimondi and Boyd (1958), full (360 deg) bearing, Sommerfeld number S and attitude angle
-# phi [deg] at the eccentricity ratios EPS. Transcribed from their charts in a course tool
-# found in the public code index (``find_string "1.33, 0.631"``, file id 69000706882; it names
-# no source; S to 3 figures, phi read to 0.5 deg).
-EPS = [0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 0.95]
-RAIMONDI_BOYD = {
-    0.5: (
-        [4.32, 2.03, 1.21, 0.784, 0.508, 0.318, 0.184, 0.0912, 0.0309, 0.0116],
-        [82, 75, 68.5, 61.53, 55, 48, 41, 33, 23.5, 17],
-    ),
-    1.0: (
-        [1.33, 0.631, 0.388, 0.260, 0.178, 0.120, 0.0776, 0.0443, 0.0185, 0.00831],
-        [79.5, 74.0, 68.0, 62.5, 56.5, 50.5, 44.0, 36.0, 26.0, 19.0],
-    ),
-    2.0: (
-        [0.559, 0.271, 0.173, 0.122, 0.0893, 0.0654, 0.0463, 0.0297, 0.0143, 0.00707],
-        [75, 71, 67, 62.5, 58, 52.5, 46.5, 39, 29, 21],
-    ),
-}
-# L / D = 1, S at h0 / c = 1 - eps, Raimondi and Boyd's table to its 3 figures, from the
-# MATLAB Answers page "design of journal bearing" (mathworks.com/matlabcentral/answers/707318).
-RAIMONDI_BOYD_TABLE = {0.1: 1.33, 0.2: 0.631, 0.4: 0.264, 0.6: 0.121, 0.8: 0.0446, 0.9: 0.0188}
 # 3 %: the issue's bound; the sources' rounding is up to 1.5 % (0.0116) and the solver's
 # discretisation error below 1 % (test_grid_convergence).
 PUBLISHED = 0.03
@@ -65,14 +44,14 @@ def table():
 @pytest.mark.parametrize("ratio", sorted(RAIMONDI_BOYD))
 def test_solver_against_raimondi_boyd(ratio):
     published_s, published_phi = RAIMONDI_BOYD[ratio]
-    for eps, s_pub, phi_pub in zip(EPS, published_s, published_phi, strict=True):
+    for eps, s_pub, phi_pub in zip(RAIMONDI_BOYD_EPS, published_s, published_phi, strict=True):
         s, phi = sommerfeld(*film_force(eps, -0.5 * math.pi, ratio), eps)
         assert s == pytest.approx(s_pub, rel=PUBLISHED), (ratio, eps)
         assert phi == pytest.approx(phi_pub, rel=PUBLISHED), (ratio, eps)
 
 
 def test_solver_against_raimondi_boyd_table():
-    for eps, s_pub in RAIMONDI_BOYD_TABLE.items():
+    for eps, s_pub in RAIMONDI_BOYD_TABLE_LD1.items():
         s, _ = sommerfeld(*film_force(eps, -0.5 * math.pi, 1.0), eps)
         assert s == pytest.approx(s_pub, rel=PUBLISHED), eps
 
@@ -81,7 +60,7 @@ def test_kernel_steady_journal_against_raimondi_boyd(table):
     """Physical units through ``finite_bearing_forces``: S = (R/c)^2 mu N / (F / (L D))."""
     width = 2.0 * R  # L / D = 1
     published_s, published_phi = RAIMONDI_BOYD[1.0]
-    for eps, s_pub, phi_pub in zip(EPS, published_s, published_phi, strict=True):
+    for eps, s_pub, phi_pub in zip(RAIMONDI_BOYD_EPS, published_s, published_phi, strict=True):
         f_r, f_t = finite_bearing_forces(table, eps, 0.0, 0.0, W, MU, R, width, C)
         assert f_r < 0.0 < f_t  # the short bearing's signs (lubrication.py)
         load = math.hypot(f_r, f_t) / (width * 2.0 * R)
