@@ -232,14 +232,15 @@ def test_pressure_power_is_minus_force_dot_velocity(eps, psi):
 
 
 def test_kernel_against_direct_solves(table):
-    """Off-node points: within 0.5 % of |W| (2 % moving away from the wall, where it falls)."""
+    """Off-node points: within 0.5 % of |W| towards the wall, 1 % away from it (5 % beyond
+    eps = 0.999, where that force falls by orders of magnitude over a few degrees of chi)."""
     rng = np.random.default_rng(7)
     for _ in range(40):
         eps = -math.expm1(-rng.uniform(0.0, math.log(1e4)))
         psi = rng.uniform(-math.pi, math.pi)
         direct = np.array(film_force(eps, psi, 1.0))
         kernel = np.array(film_impedance(table, eps, psi))
-        bound = 0.005 if math.cos(psi) >= 0.0 else 0.02
+        bound = 0.005 if math.cos(psi) >= 0.0 else 0.01 if eps < 0.999 else 0.05
         assert np.linalg.norm(kernel - direct) < bound * np.linalg.norm(direct), (eps, psi)
 
 
