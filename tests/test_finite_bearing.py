@@ -306,9 +306,10 @@ def test_cache_loads_rebuilds_and_survives(tmp_path, monkeypatch, table):
     monkeypatch.setattr(impedance, "build_table", counted)
     impedance._cached_table.cache_clear()
     first = impedance_table(1.0)
-    assert built == [1.0] and not first.flags.writeable
+    assert built == [1.0] and np.array_equal(first, table)
     assert impedance.cache_file(1.0).parent == tmp_path
-    assert impedance_table(1.0) is first  # memory
+    first[:] = 0.0  # a caller's copy: the cache keeps its own
+    assert np.array_equal(impedance_table(1.0), table) and built == [1.0]  # memory
     impedance._cached_table.cache_clear()
     assert np.array_equal(impedance_table(1.0), table) and built == [1.0]  # disk
     impedance.cache_file(1.0).write_bytes(b"not a table")

@@ -76,10 +76,11 @@ S_MAX = math.log(1e4)  # the last node: 1 - eps = 1e-4
 
 
 def impedance_table(width_over_diameter: float) -> NDArray[np.float64]:
-    """The impedance table of a bearing with L / D ``width_over_diameter`` (read-only).
+    """The impedance table of a bearing with L / D ``width_over_diameter``, for the kernel.
 
-    Built on the first call for an L / D (a few seconds), then taken from memory or from
-    the disk cache (module docstring).
+    Built on the first call for an L / D (about 2 s), then taken from memory or from the
+    disk cache (module docstring). Each call returns its own copy (a float64 array, writeable
+    as numba's kernels take them); the layout is ``kernels.laws.impedance``'s.
 
     Raises
     ------
@@ -97,7 +98,7 @@ def impedance_table(width_over_diameter: float) -> NDArray[np.float64]:
                 "bearing needs a finite width-to-diameter ratio L / D > 0"
             ]
         )
-    return _cached_table(ratio)
+    return _cached_table(ratio).copy()
 
 
 def build_table(

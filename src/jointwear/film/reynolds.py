@@ -118,11 +118,11 @@ class FilmGrid:
         out = self.diagonal * pressure
         out[:, :-1] -= self.axial * pressure[:, 1:]
         out[:, 1:] -= self.axial * pressure[:, :-1]
-        flow = self.angular * pressure  # from row i towards row i + 1, per unit P
+        coupled = self.angular * pressure  # row i's term in the equation of row i + 1
         out[:-1] -= self.angular[:-1] * pressure[1:]
         out[-1] -= self.angular[-1] * pressure[0]
-        out[1:] -= flow[:-1]
-        out[0] -= flow[-1]
+        out[1:] -= coupled[:-1]
+        out[0] -= coupled[-1]
         return out
 
 
