@@ -304,8 +304,8 @@ def _film_rows(c: object) -> list[tuple]:
     touching = asperity_load(0.0, c.roughness, scale, c.relative_radius, c.width)
     return [
         ("film width / diameter L/D", c.width / (2.0 * c.journal_radius), ""),
-        ("roughness sigma", c.roughness * 1e6, "um"),
-        ("asperities touch below film thickness", ASPERITY_START * c.roughness * 1e6, "um"),
+        ("roughness sigma", c.roughness * 1e6, "µm"),
+        ("asperities touch below film thickness", ASPERITY_START * c.roughness * 1e6, "µm"),
         (
             "  i.e. above eccentricity ratio",
             1.0 - ASPERITY_START * c.roughness / c.radial_clearance,

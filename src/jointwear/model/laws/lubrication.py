@@ -90,7 +90,7 @@ LUBRICATION = Family(
             "finite_bearing", 3,
             "finite bearing, Reynolds cavitation, tabulated by impedance (Childs et al. 1977), "
             "with Greenwood-Tripp asperity contact",
-            ("childs1977", "raimondi1958", "greenwood1970", "patir1978"),
+            ("childs1977", "raimondi1958", "greenwood1970", "hu1994", "patir1978"),
             keys=(VISCOSITY, ROUGHNESS, ROUGHNESS_PARAMETER, ASPERITY_SLOPE), pack=_mixed,
             kernels=(Kernel("lubrication:finite_bearing_forces", ("table", *_FILM)),),
             shapes=(CONFORMAL,),
