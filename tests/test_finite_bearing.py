@@ -334,7 +334,7 @@ def test_cache_folder_defaults(monkeypatch, tmp_path):
     assert impedance.cache_folder() == tmp_path / ".cache" / "jointwear"
 
 
-@pytest.mark.parametrize("bad", [0.0, -1.0, math.nan, math.inf, "wide", None])
+@pytest.mark.parametrize("bad", [0.0, -1.0, math.nan, math.inf, 20.5, "wide", None])
 def test_bad_width_over_diameter(bad):
     with pytest.raises(ModelError, match="width / diameter"):
         impedance_table(bad)

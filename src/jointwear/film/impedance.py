@@ -66,6 +66,7 @@ from ..kernels.laws.impedance import (
     LAYOUT,
 )
 from ..model.errors import ModelError
+from ..model.laws.lubrication import MAX_FILM_RATIO
 from .reynolds import N_ANGLE, N_AXIAL, film_grid, solve_film
 
 SOLVER_VERSION = 1  # in the cache file's name: bump when the solver or the table changes
@@ -91,11 +92,11 @@ def impedance_table(width_over_diameter: float) -> NDArray[np.float64]:
         ratio = float(width_over_diameter)
     except (TypeError, ValueError):
         ratio = math.nan
-    if not (math.isfinite(ratio) and ratio > 0.0):
+    if not (math.isfinite(ratio) and 0.0 < ratio <= MAX_FILM_RATIO):
         raise ModelError(
             [
                 f"width / diameter: {width_over_diameter!r} is not allowed; the finite "
-                "bearing needs a finite width-to-diameter ratio L / D > 0"
+                f"bearing needs a width-to-diameter ratio 0 < L / D <= {MAX_FILM_RATIO:g}"
             ]
         )
     return _cached_table(ratio).copy()

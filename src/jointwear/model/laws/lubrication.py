@@ -31,6 +31,8 @@ ASPERITY_SLOPE = Key(
     "asperity_slope", "", 1e-3, positive=True, high=1.0,
     help="sigma / beta: roughness over the asperities' radius",
 )  # fmt: skip
+MAX_FILM_RATIO = 20.0  # the largest L/D of a finite bearing's table (film.impedance)
+ASPERITY_START = 4.0  # film thickness / roughness below which asperities touch (Hu et al. 1994)
 _FILM = ("eps", "eps_dot", "gamma_dot", "w", "mu", "r", "width", "c")
 _RANGE = (Range(ECCENTRICITY, BREAKDOWN.name),)
 
