@@ -184,6 +184,7 @@ WINDOW_KEYS = (
     "energy_dissipated_damping_j",
     "energy_dissipated_friction_j",
     "energy_dissipated_film_j",
+    "film",
 )  # the joints' figures that depend on the span they are gathered over
 
 
