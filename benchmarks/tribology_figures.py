@@ -25,7 +25,6 @@ from pathlib import Path
 import numpy as np
 
 import jointwear as jw
-from jointwear.figures.files import save_png
 from jointwear.joints.revolute.figures import plot_film_pressure
 from jointwear.joints.revolute.film_field import film_field
 from jointwear.kernels.laws.asperity import mean_gap
@@ -94,7 +93,7 @@ def main() -> None:
                 f"| {case[film + 'asperity_load_share']:.1%} | {shear_share(results):.1%} |"
             )
         if not args.no_images:
-            save_png(plot_film_pressure(example), IMAGES / "slider_crank_film_pressure.png")
+            plot_film_pressure(example).savefig(IMAGES / "slider_crank_film_pressure.png", dpi=120)
             shutil.copyfile(out / "figures" / "stribeck.png", IMAGES / "slider_crank_stribeck.png")
 
 

@@ -110,11 +110,14 @@ def _draw(sub: SubFigure, results: Results, field: FilmField, peak: bool) -> Non
     _angle_axis(ax, field.eps)
     ax.set_ylim(z[0], z[-1])
     ax.set_ylabel("axial position z [mm]")
+    ax.lines[-1].set_label("thinnest film")
     handles = [
-        Patch(fc="w", ec=CAVITATED, hatch="///", label="cavitated, p = 0"),
+        *([Patch(fc="w", ec=CAVITATED, hatch="///", label="cavitated, p = 0")]
+          if field.cavitated.any() else []),
+        *([Patch(fc="w", ec=CAVITATED, label=f"p < {UNFILLED * peak_p:.2g} MPa")]
+          if peak_p > 0.0 else []),
         ax.lines[-1],
-    ]
-    handles[1].set_label("thinnest film")
+    ]  # fmt: skip
     ax.legend(handles=handles, loc="lower left", fontsize="small", framealpha=0.9)
     _thickness(top, field, c.roughness, a)
     sub.suptitle(_title(results, field, peak, joint), fontsize="medium")
