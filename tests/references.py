@@ -11,7 +11,8 @@ jointwear. The answers are:
 - the crank torque of the ideal four-bar by the power balance (ideal joints do no work), and the
   same torque plus all joint reactions by Newton-Euler equations written body by body;
 - the period of a compound pendulum at any amplitude (complete elliptic integral);
-- kinetic and gravitational potential energy of a mechanism from a results table.
+- kinetic and gravitational potential energy of a mechanism from a results table;
+- Raimondi and Boyd's steady full journal bearing: Sommerfeld numbers and attitude angles.
 
 References
 ----------
@@ -445,3 +446,29 @@ def mechanism_energy(
 def fourbar_bodies(fourbar: FourBar = PAPER_FOURBAR) -> dict[str, tuple[float, float]]:
     """Body name -> (mass [kg], inertia [kg m^2]) of a four-bar, for :func:`mechanism_energy`."""
     return dict(zip(BODY_NAMES, zip(fourbar.masses, fourbar.inertias, strict=True), strict=True))
+
+
+# Raimondi and Boyd (1958, ASLE Trans. 1: 159-209), full (360 deg) journal bearing: the
+# Sommerfeld number S = (R/c)^2 mu N / P and the attitude angle phi [deg] at the eccentricity
+# ratios RAIMONDI_BOYD_EPS, by L / D. Transcribed from their charts in a course tool found in
+# the public code index (search verb ``find_string "1.33, 0.631"``, file id 69000706882; the
+# tool names no source; S to 3 figures, phi read to 0.5 deg).
+RAIMONDI_BOYD_EPS = (0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 0.95)
+RAIMONDI_BOYD = {
+    0.5: (
+        (4.32, 2.03, 1.21, 0.784, 0.508, 0.318, 0.184, 0.0912, 0.0309, 0.0116),
+        (82, 75, 68.5, 61.53, 55, 48, 41, 33, 23.5, 17),
+    ),
+    1.0: (
+        (1.33, 0.631, 0.388, 0.260, 0.178, 0.120, 0.0776, 0.0443, 0.0185, 0.00831),
+        (79.5, 74.0, 68.0, 62.5, 56.5, 50.5, 44.0, 36.0, 26.0, 19.0),
+    ),
+    2.0: (
+        (0.559, 0.271, 0.173, 0.122, 0.0893, 0.0654, 0.0463, 0.0297, 0.0143, 0.00707),
+        (75, 71, 67, 62.5, 58, 52.5, 46.5, 39, 29, 21),
+    ),
+}
+# L / D = 1, S at h0 / c = 1 - eps to the 3 figures of Raimondi and Boyd's table, from the
+# MATLAB Answers page "design of journal bearing" (mathworks.com/matlabcentral/answers/707318),
+# which lists them with the friction variable of the same table.
+RAIMONDI_BOYD_TABLE_LD1 = {0.1: 1.33, 0.2: 0.631, 0.4: 0.264, 0.6: 0.121, 0.8: 0.0446, 0.9: 0.0188}

@@ -16,6 +16,7 @@ import numpy as np
 import pytest
 from scipy import integrate, special
 
+from jointwear.kernels.laws import asperity
 from jointwear.kernels.laws.asperity import (
     asperity_energy,
     asperity_load,
@@ -23,7 +24,7 @@ from jointwear.kernels.laws.asperity import (
     f52,
     mean_gap,
 )
-from jointwear.model.laws.lubrication import asperity_constant
+from jointwear.model.laws.lubrication import ASPERITY_START, asperity_constant
 
 ROOT = Path(__file__).parents[1]
 SQRT_2PI = math.sqrt(2 * math.pi)
@@ -264,3 +265,8 @@ def test_the_docs_table_is_what_the_script_prints():
     lines = (ROOT / "docs" / "theory.md").read_text().splitlines()
     for lam in SCRIPT.LAMBDAS:
         assert SCRIPT.row(lam) in lines, f"docs/theory.md lacks {SCRIPT.row(lam)!r}: run the script"
+
+
+def test_the_model_side_knows_where_the_kernel_lets_asperities_touch():
+    # The schema and `check` (numba-free) name the kernel's lambda of first contact.
+    assert ASPERITY_START == asperity.ASPERITY_START == 4.0

@@ -37,3 +37,11 @@ def test_the_sweep_table_rows_are_what_the_script_prints(c_mm, mu):
     assert row in _lines("studies.md"), (
         f"docs/studies.md lacks {row!r}: run benchmarks/sweep_table.py"
     )
+
+
+@pytest.mark.parametrize("eps", [0.5, 0.9])
+def test_the_finite_bearing_rows_are_what_the_script_prints(eps):
+    row = _script("finite_bearing").row(1.0, eps)  # the theory page's Raimondi-Boyd table
+    assert row in _lines("theory.md"), (
+        f"docs/theory.md lacks {row!r}: run benchmarks/finite_bearing.py"
+    )

@@ -229,11 +229,16 @@ def test_contact_time_and_wear_converge(name, reference, monkeypatch):
         ({"roughness": None}, "finite_bearing': needs roughness"),
         ({"film_breakdown": 0.99}, "film_breakdown is used by lubrication 'short_bearing' or "),
         ({"lubrication": "short_bearing", "viscosity": 0.1}, "roughness is used by lubrication"),
+        ({"roughness": 0.06e-3}, "its asperities would touch with the journal centred"),
+        ({"width": 0.5}, "L/D = 25.51 is beyond the finite bearing's 20"),
+        ({"roughness": float("nan")}, "roughness"),
+        ({"asperity_slope": 2.0}, "asperity_slope"),
     ],
 )
 def test_a_mixed_film_is_asked_for_what_it_needs_and_nothing_else(keys, message):
-    data = model_with(**keys)
+    data = model_with(**{k: v for k, v in keys.items() if k != "width"})
     clearance = data["joints"][0]["clearance"]
+    clearance.update({k: v for k, v in keys.items() if k == "width"})
     for key in [k for k, v in keys.items() if v is None]:
         clearance.pop(key)
     with pytest.raises(ModelError) as error:

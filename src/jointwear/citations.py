@@ -113,6 +113,11 @@ REFERENCES: dict[str, str] = {
         'J.A. Greenwood, J.H. Tripp, "The contact of two nominally flat rough surfaces", '
         "Proceedings of the Institution of Mechanical Engineers 185 (1970-71) 625-633"
     ),
+    "hu1994": (
+        'Y. Hu, H.S. Cheng, T. Arai, Y. Kobayashi, S. Aoyama, "Numerical simulation of piston '
+        'ring in mixed lubrication: a nonaxisymmetrical analysis", Journal of Tribology 116 '
+        "(1994) 470-478"
+    ),
     "patir1978": (
         'N. Patir, H.S. Cheng, "An average flow model for determining effects of '
         'three-dimensional roughness on partial hydrodynamic lubrication", Journal of '

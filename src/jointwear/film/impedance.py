@@ -12,15 +12,19 @@ film's cavitated content is a state of its own that the dynamics would have to c
 transport around the film. Raimondi and Boyd's (1958) steady tables use the Reynolds
 condition too.
 
-The film here is periodic: no supply groove holds the pressure at ambient anywhere, since in a
-dynamically loaded joint the line of centres turns relative to any groove. Raimondi and Boyd's
-full bearing has P = 0 along the thickest film (their oil inlet); the solver reproduces their
-tables with that condition (``film_grid(..., supply=True)``), and the periodic film differs from
-them at small eps and large L / D, where its pressure zone reaches past the thickest film.
+Inlet. The film has P = 0 along the thickest film (``reynolds``), Raimondi and Boyd's oil
+inlet: a condition on the state alone, like the pi-film of the short and long bearings, and
+the one whose steady forces the published tables give. The thickest film is undefined at
+eps = 0: there the force for V pointing away from e_r is that of a film cut open at its
+middle, so a journal squeezed straight through the bearing centre meets a force that jumps
+(``docs/theory.md``).
 
-Table. Over s = -ln(1 - eps) from 0 to ln(1e4) (1 - eps = 1e-4) and chi in [-pi, pi) (layout
-and interpolation: ``jointwear.kernels.laws.impedance``). Only chi in [0, pi] is solved: the
-mirror a -> -a maps V = (v_r, v_t) to (v_r, -v_t) and the force (K_r, K_t) to (K_r, -K_t).
+Table. G(s, chi) = q^(3/2) K(cos chi, sin chi / sqrt(q)), q = 1 - eps^2, over
+s = -ln(1 - eps) from 0 to ln(1e4) (1 - eps = 1e-4), and over chi = theta + STRETCH sin theta
+at uniform theta in [-pi, pi): the nodes crowd towards chi = pi, where the journal leaves the
+thin film and its force falls by orders of magnitude over a few degrees of chi (layout,
+coordinates and interpolation: ``jointwear.kernels.laws.impedance``). Only theta in [0, pi]
+is solved: the mirror a -> -a maps V = (v_r, v_t) to (v_r, -v_t) and K to (K_r, -K_t).
 
 Cache. In memory per process, and on disk in ``$JOINTWEAR_CACHE_DIR``, else
 ``$XDG_CACHE_HOME/jointwear``, else ``~/.cache/jointwear``, one ``.npy`` file per L / D whose
@@ -31,7 +35,7 @@ or does not fit is rebuilt, and a folder that cannot be written is passed over.
 References
 ----------
 D. Childs, H. Moes, H. van Leeuwen, "Journal bearing impedance descriptions for rotordynamic
-applications", J. Lubr. Technol. 99 (1977) 198-214.
+applications", J. Lubr. Technol. 99 (1977) 198-210.
 J.F. Booker, "Dynamically loaded journal bearings: mobility method of solution", J. Basic
 Eng. 87 (1965) 537-546.
 B. Jakobsson, L. Floberg, "The finite journal bearing, considering vaporization", Trans.
@@ -62,6 +66,7 @@ from ..kernels.laws.impedance import (
     LAYOUT,
 )
 from ..model.errors import ModelError
+from ..model.laws.lubrication import MAX_FILM_RATIO
 from .reynolds import N_ANGLE, N_AXIAL, film_grid, solve_film
 
 SOLVER_VERSION = 1  # in the cache file's name: bump when the solver or the table changes
@@ -72,10 +77,11 @@ S_MAX = math.log(1e4)  # the last node: 1 - eps = 1e-4
 
 
 def impedance_table(width_over_diameter: float) -> NDArray[np.float64]:
-    """The impedance table of a bearing with L / D ``width_over_diameter`` (read-only).
+    """The impedance table of a bearing with L / D ``width_over_diameter``, for the kernel.
 
-    Built on the first call for an L / D (a few seconds), then taken from memory or from
-    the disk cache (module docstring).
+    Built on the first call for an L / D (about 2 s), then taken from memory or from the
+    disk cache (module docstring). Each call returns its own copy (a float64 array, writeable
+    as numba's kernels take them); the layout is ``kernels.laws.impedance``'s.
 
     Raises
     ------
@@ -86,14 +92,14 @@ def impedance_table(width_over_diameter: float) -> NDArray[np.float64]:
         ratio = float(width_over_diameter)
     except (TypeError, ValueError):
         ratio = math.nan
-    if not (math.isfinite(ratio) and ratio > 0.0):
+    if not (math.isfinite(ratio) and 0.0 < ratio <= MAX_FILM_RATIO):
         raise ModelError(
             [
                 f"width / diameter: {width_over_diameter!r} is not allowed; the finite "
-                "bearing needs a finite width-to-diameter ratio L / D > 0"
+                f"bearing needs a width-to-diameter ratio 0 < L / D <= {MAX_FILM_RATIO:g}"
             ]
         )
-    return _cached_table(ratio)
+    return _cached_table(ratio).copy()
 
 
 def build_table(

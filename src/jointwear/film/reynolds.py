@@ -49,7 +49,7 @@ ring cut open at the inlet.
 References
 ----------
 D. Childs, H. Moes, H. van Leeuwen, "Journal bearing impedance descriptions for rotordynamic
-applications", J. Lubr. Technol. 99 (1977) 198-214.
+applications", J. Lubr. Technol. 99 (1977) 198-210.
 M. Hintermueller, K. Ito, K. Kunisch, "The primal-dual active set strategy as a semismooth
 Newton method", SIAM J. Optim. 13 (2003) 865-888.
 A.A. Raimondi, J. Boyd, "A solution for the finite journal bearing and its application to
@@ -118,8 +118,11 @@ class FilmGrid:
         out = self.diagonal * pressure
         out[:, :-1] -= self.axial * pressure[:, 1:]
         out[:, 1:] -= self.axial * pressure[:, :-1]
-        out -= self.angular * np.roll(pressure, -1, axis=0)
-        out -= np.roll(self.angular * pressure, 1, axis=0)
+        coupled = self.angular * pressure  # row i's term in the equation of row i + 1
+        out[:-1] -= self.angular[:-1] * pressure[1:]
+        out[-1] -= self.angular[-1] * pressure[0]
+        out[1:] -= coupled[:-1]
+        out[0] -= coupled[-1]
         return out
 
 
@@ -274,26 +277,32 @@ def _solve_free(grid: FilmGrid, b: NDArray[np.float64], free: NDArray[np.bool_])
 
     The cavitated cells become identity rows, which keeps the matrix symmetric positive
     definite. Cut open where no flow crosses from one row of cells to the next (the supply
-    line, or a row that is all cavitated), the ring is a band of half-width n_axial (LAPACK's
-    banded Cholesky); a ring with no such place goes to SuperLU.
+    line, or a row that is all cavitated), and without its rows that are all cavitated, the
+    ring is a band of half-width n_axial (LAPACK's banded Cholesky); a ring with no such place
+    goes to SuperLU.
     """
     n_a, n_z = grid.shape
     diagonal = np.where(free, grid.diagonal, 1.0)
     axial = grid.axial * (free[:, :-1] & free[:, 1:])
-    angular = grid.angular * (free & np.roll(free, -1, axis=0))
+    angular = grid.angular * free
+    angular[:-1] *= free[1:]
+    angular[-1] *= free[0]
     rhs = np.where(free, b, 0.0)
     cuts = np.flatnonzero(~angular.any(axis=1))  # no flow from row k to row k + 1
     if cuts.size:
-        order = np.roll(np.arange(n_a), -(cuts[0] + 1))  # the ring, cut open there
-        band = np.zeros((n_z + 1, n_a * n_z))
-        band[n_z] = diagonal[order].ravel()
-        upper = np.zeros((n_a, n_z))
-        upper[:, 1:] = -axial[order]
-        band[n_z - 1] = upper.ravel()
-        band[0, n_z:] = -angular[order][:-1].ravel()
-        solved = solveh_banded(band, rhs[order].ravel(), check_finite=False)
-        pressure = np.empty((n_a, n_z))
-        pressure[order] = solved.reshape(n_a, n_z)
+        ring = np.roll(np.arange(n_a), -(cuts[0] + 1))  # the ring, cut open there
+        order = ring[free[ring].any(axis=1)]  # without the rows that are all cavitated
+        pressure = np.zeros((n_a, n_z))
+        if order.size:
+            band = np.zeros((n_z + 1, order.size * n_z))
+            band[n_z] = diagonal[order].ravel()
+            upper = np.zeros((order.size, n_z))
+            upper[:, 1:] = -axial[order]
+            band[n_z - 1] = upper.ravel()
+            # a row's flow to the next row in the ring; 0 where that one was left out
+            band[0, n_z:] = -angular[order][:-1].ravel()
+            solved = solveh_banded(band, rhs[order].ravel(), check_finite=False)
+            pressure[order] = solved.reshape(order.size, n_z)
         return pressure
     index = np.arange(n_a * n_z).reshape(n_a, n_z)
     rows = np.concatenate([index[:, :-1].ravel(), index.ravel()])

@@ -305,15 +305,15 @@ def _film_rows(c: object) -> list[tuple]:
     """``check`` rows of a mixed film: its L/D, and where and how the asperities take over."""
     if not getattr(c, "roughness", None):
         return []
-    from ...kernels.laws.asperity import ASPERITY_START, asperity_load
-    from ...model.laws.lubrication import asperity_constant
+    from ...kernels.laws.asperity import asperity_load
+    from ...model.laws.lubrication import ASPERITY_START, asperity_constant
 
     scale = asperity_constant(c.roughness_parameter, c.asperity_slope) * c.contact_modulus
     touching = asperity_load(0.0, c.roughness, scale, c.relative_radius, c.width)
     return [
         ("film width / diameter L/D", c.width / (2.0 * c.journal_radius), ""),
-        ("roughness sigma", c.roughness * 1e6, "um"),
-        ("asperities touch below film thickness", ASPERITY_START * c.roughness * 1e6, "um"),
+        ("roughness sigma", c.roughness * 1e6, "µm"),
+        ("asperities touch below film thickness", ASPERITY_START * c.roughness * 1e6, "µm"),
         (
             "  i.e. above eccentricity ratio",
             1.0 - ASPERITY_START * c.roughness / c.radial_clearance,

@@ -14,6 +14,7 @@ from pydantic import model_validator
 from ...kernels.codes import JointKind
 from ...model.clearance import ClearanceTable, PositiveLength, law_name
 from ...model.laws import EVERY, WEAR_DISTRIBUTION
+from ...model.laws.lubrication import ASPERITY_START, MAX_FILM_RATIO, reads_film_table
 from ...model.laws.normal import effective_radius
 from ...model.laws.record import CONFORMAL, Contact, Family
 from ...model.tables import JointTable, Number
@@ -84,10 +85,32 @@ class RevoluteClearance(ClearanceTable):
                 f"radial clearance {self.radial_clearance:g} m (default 1e-10 m)"
             )
         if not problems:
-            problems = self._stiffness_problems()
+            problems = self._stiffness_problems() + self._film_problems()
         if problems:
             raise ValueError("; ".join(problems))
         return self
+
+    def _film_problems(self) -> list[str]:
+        """A finite bearing's L/D beyond its table, or a roughness the clearance cannot hold."""
+        if not reads_film_table(self.lubrication):
+            return []
+        problems = []
+        ratio = self.width / (2.0 * self.journal_radius)
+        if ratio > MAX_FILM_RATIO:
+            problems.append(
+                f"width / journal diameter L/D = {ratio:.4g} is beyond the finite bearing's "
+                f"{MAX_FILM_RATIO:g}; give a width up to {MAX_FILM_RATIO:g} diameters (the "
+                "film barely changes beyond: at L/D = 20 it is the infinitely long bearing's "
+                "within 0.3 %)"
+            )
+        if ASPERITY_START * self.roughness >= self.radial_clearance:
+            problems.append(
+                f"roughness {self.roughness * 1e6:.4g} um: its asperities would touch with the "
+                f"journal centred (4 x roughness >= the radial clearance "
+                f"{self.radial_clearance * 1e6:.4g} um); roughness is the surfaces' combined "
+                "RMS height, typically 0.05 to 2 um"
+            )
+        return problems
 
     @property
     def radial_clearance(self) -> float:

@@ -352,9 +352,11 @@ def _film(table, k, out, e, gap, delta, nx, ny, delta_dot, gamma_dot, w, w_rel):
     angular speeds.
 
     Mixed (a roughness sigma > 0): the asperities carry ``asperity_load`` (into C_ASPERITY)
-    where the gap h = -delta closes to a few sigma, and the film sees the rough surfaces'
-    mean gap (``mean_gap``), which stays positive, so film and asperities share the load and
-    no setting decides the hand-over.
+    where the gap h = -delta closes below 4 sigma, and the film sees the rough surfaces' mean
+    gap (``mean_gap``), which stays positive, so film and asperities share the load and no
+    setting decides the hand-over. Where the mean planes overlap (h < 0) the bulk contact
+    law takes the further load (``evaluate``), and the asperities' load and the film's mean
+    gap keep their values at h = 0 (docs/theory.md, section 6).
 
     Without roughness (the short and long bearings): up to the eccentricity ratio eps_b
     (``P_BREAKDOWN``) the film carries the journal alone. Beyond it the film is that at eps_b
@@ -370,8 +372,9 @@ def _film(table, k, out, e, gap, delta, nx, ny, delta_dot, gamma_dot, w, w_rel):
     roughness = p[P_ROUGHNESS]
     weight = 1.0
     if roughness > 0.0:
-        out[C_ASPERITY] = asperity_load(-delta, roughness, p[P_ASPERITY], p[P_RSTAR], p[P_WIDTH])
-        eps = max(0.0, 1.0 - mean_gap(max(-delta, 0.0), roughness) / gap)
+        apart = max(-delta, 0.0)  # the mean planes' gap; the bulk law takes any overlap
+        out[C_ASPERITY] = asperity_load(apart, roughness, p[P_ASPERITY], p[P_RSTAR], p[P_WIDTH])
+        eps = max(0.0, 1.0 - mean_gap(apart, roughness) / gap)
     else:
         breakdown = p[P_BREAKDOWN]
         if delta > 0.0:
@@ -609,6 +612,8 @@ def elastic_energy(table, scratch):
             table.user, k, table.ints[k, I_NORMAL], delta, p[P_K], p[P_EXP], p[P_ESTAR],
             p[P_C], p[P_WIDTH],
         )  # fmt: skip
-        if p[P_ROUGHNESS] > 0.0:
-            energy += asperity_energy(-delta, p[P_ROUGHNESS], p[P_ASPERITY], p[P_RSTAR], p[P_WIDTH])
+        if p[P_ROUGHNESS] > 0.0:  # the asperities' load is held at W(0) through any overlap
+            rough = (p[P_ROUGHNESS], p[P_ASPERITY], p[P_RSTAR], p[P_WIDTH])
+            energy += asperity_energy(max(-delta, 0.0), *rough)
+            energy += asperity_load(0.0, *rough) * max(delta, 0.0)
     return energy

@@ -12,39 +12,42 @@
 | psi | angle of V from e_r | rad | |
 | q | 1 - eps^2 | - | |
 | s | -ln(1 - eps), the table's eccentricity coordinate | - | |
-| chi | atan2(sqrt(q) v_t, v_r), the table's direction coordinate | rad | |
+| chi | atan2(sqrt(q) v_t, v_r), the table's direction | rad | |
+| theta | chi = theta + beta sin theta, the nodes' coordinate | rad | |
 | G | q^(3/2) K(cos chi, sin chi / sqrt(q)), the tabulated force | - | |
 | f_r, f_t | film force on the journal along e_r and e_t | N | |
 
 The film force is F = mu L R^3 / c^3 K(V) with K homogeneous of degree 1 in V, solved
 ahead of the run by ``jointwear.film`` (the Reynolds equation with the Reynolds cavitation
-condition) and tabulated over (s, chi). The coordinates are chosen so that the table stays
-smooth and bounded up to eps -> 1: near the thinnest film the pressure peak's width scales
-like sqrt(1 - eps), so the squeeze part of K grows like q^(-3/2) and the wedge part like
-q^(-1) (the film behaves locally like a long bearing); chi weighs v_t by sqrt(q), which
-keeps the hand-over between the two (where v_r changes sign) at an angle of order one in
-chi instead of a width of order sqrt(1 - eps) in psi, and q^(3/2) scales both to O(1).
-With |V~| = hypot(v_r, sqrt(q) v_t), F = mu L R^3 / c^3 |V~| G(s, chi) / q^(3/2).
+condition) and tabulated over (s, chi). The coordinates keep the table smooth and bounded up
+to eps -> 1: near the thinnest film the pressure peak's width scales like sqrt(1 - eps), so
+the squeeze part of K grows like q^(-3/2) and the wedge part like q^(-1) (the film behaves
+locally like a long bearing); chi weighs v_t by sqrt(q), which keeps the hand-over between
+the two at an angle of order one in chi instead of a width of order sqrt(1 - eps) in psi,
+and q^(3/2) scales both to order one. With |V~| = hypot(v_r, sqrt(q) v_t),
+F = mu L R^3 / c^3 |V~| G(s, chi) / q^(3/2). Where the journal leaves the wall (chi -> pi)
+G falls by orders of magnitude within a few degrees of chi as the pressure moves out of the
+thin film; the nodes, uniform in theta, are (1 - beta) times as far apart there.
 
-Interpolation. Cubic convolution (Catmull-Rom) in s and in chi, periodic in chi: C1 in
-both. The table holds one ghost row at each end of s, the quadratic extrapolation of the
-three nearest, so the end tangents are the one-sided second-order differences. Beyond the
-last node (1 - eps below about 1e-4) G follows G_N + 2 G'_N (1 - exp(-(s - s_N) / 2)),
-matching the value and slope at s_N: the leading correction to the local long-bearing film
-is of order sqrt(1 - eps) = exp(-s / 2) (the axial leakage over a peak of that width).
+Interpolation. Cubic convolution (Catmull-Rom) in s and in theta, periodic in theta: C1 in
+both, and in (eps, psi). The table holds one ghost row at each end of s, the quadratic
+extrapolation of the three nearest, so the end tangents are the one-sided second-order
+differences. Beyond the last node (1 - eps below 1e-4) G follows
+G_N + 2 G'_N (1 - exp(-(s - s_N) / 2)), matching the value and slope at s_N and bounded: the
+film there is locally a long bearing whose side leakage, over a peak of width of order
+sqrt(1 - eps) = exp(-s / 2), is the leading correction (the tests check it at 1 - eps = 1e-5).
 
 Table layout (one float64 array per L / D; ``jointwear.film.impedance`` builds it):
 
-    [0] LAYOUT (the layout's version), [1] n_s, [2] n_chi, [3] s_max, [4] L / D,
-    then G_r at (s_k, chi_j), k = -1 .. n_s (ghost rows included), j = 0 .. n_chi - 1,
-    row-major (n_s + 2 rows of n_chi), then G_t the same way.
-
-s_k = k s_max / (n_s - 1), chi_j = -pi + 2 pi j / n_chi.
+    [0] LAYOUT (the layout's version), [1] n_s, [2] n_theta, [3] s_max, [4] L / D,
+    [5] beta, then G_r at (s_k, theta_j), k = -1 .. n_s (ghost rows included),
+    j = 0 .. n_theta - 1, row-major (n_s + 2 rows of n_theta), then G_t the same way;
+    s_k = k s_max / (n_s - 1), theta_j = -pi + 2 pi j / n_theta.
 
 References
 ----------
 D. Childs, H. Moes, H. van Leeuwen, "Journal bearing impedance descriptions for rotordynamic
-applications", J. Lubr. Technol. 99 (1977) 198-214.
+applications", J. Lubr. Technol. 99 (1977) 198-210.
 R.G. Keys, "Cubic convolution interpolation for digital image processing", IEEE Trans.
 Acoust. Speech Signal Process. 29 (1981) 1153-1160.
 """

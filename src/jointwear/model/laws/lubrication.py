@@ -31,6 +31,8 @@ ASPERITY_SLOPE = Key(
     "asperity_slope", "", 1e-3, positive=True, high=1.0,
     help="sigma / beta: roughness over the asperities' radius",
 )  # fmt: skip
+MAX_FILM_RATIO = 20.0  # the largest L/D of a finite bearing's table (film.impedance)
+ASPERITY_START = 4.0  # film thickness / roughness below which asperities touch (Hu et al. 1994)
 _FILM = ("eps", "eps_dot", "gamma_dot", "w", "mu", "r", "width", "c")
 _RANGE = (Range(ECCENTRICITY, BREAKDOWN.name),)
 
@@ -90,7 +92,7 @@ LUBRICATION = Family(
             "finite_bearing", 3,
             "finite bearing, Reynolds cavitation, tabulated by impedance (Childs et al. 1977), "
             "with Greenwood-Tripp asperity contact",
-            ("childs1977", "raimondi1958", "greenwood1970", "patir1978"),
+            ("childs1977", "raimondi1958", "greenwood1970", "hu1994", "patir1978"),
             keys=(VISCOSITY, ROUGHNESS, ROUGHNESS_PARAMETER, ASPERITY_SLOPE), pack=_mixed,
             kernels=(Kernel("lubrication:finite_bearing_forces", ("table", *_FILM)),),
             shapes=(CONFORMAL,),
