@@ -66,7 +66,7 @@ def figure_plan(results: Results, ideal: Results | None = None) -> dict[str, Dra
 def kind_drawings(
     kind: ClearanceKind, results: Results, ideal: Results | None = None
 ) -> dict[str, Drawing]:
-    """The figures of ``kind`` by file name; none without joints of that kind.
+    """The figures of ``kind`` that ``results`` get, by file name; none without its joints.
 
     ``ideal``: the same mechanism with ideal joints, for the figures that compare with it.
     """
@@ -79,4 +79,5 @@ def kind_drawings(
             (results, ideal) if name in kind.figures_with_ideal else (results,),
         )
         for name, plot in kind.figures
+        if kind.draws(name, results.model)
     }

@@ -9,7 +9,12 @@ depth), drawn when the table has its columns and they change between cases:
 - ``contact_time.png``: the share of the time in contact (free flight and impacts against
   continuous contact);
 - ``clearance_growth.png`` and ``wear_life.png`` (long-life runs, ``--cycles``): the growth
-  of the clearance, and the cycles until it has grown by half.
+  of the clearance, and the cycles until it has grown by half;
+- ``friction_coefficient.png`` and ``asperity_load_share.png`` (lubricated joints): the
+  friction the joint's load meets, and the share of the load its surfaces carry where the
+  film is too thin;
+- ``stribeck.png`` (lubricated joints, 3 cases or more): the Stribeck curve, friction
+  coefficient against the Hersey number (``figures.stribeck``).
 
 These are what Flores (2009) judges a clearance joint by: the forces it causes and the wear
 they cause. The rest of the summary stays in the table: the penetration follows the force,
@@ -56,6 +61,7 @@ from ..model.overrides import toml_value
 from ..units import unit_of
 from .files import save_png
 from .legends import LEGEND_ROOM
+from .stribeck import plot_stribeck, stribeck_joints
 
 LOG_AXIS_RATIO = 10.0  # positive values spanning more than a decade get a logarithmic axis
 LONG_LENGTH = (1e-3, "m", 1.0)  # lengths in a column reaching this [m] are drawn in metres
@@ -72,6 +78,8 @@ FIGURES_OF_MERIT = (  # file name, title, a joint's column key (a regular expres
     ("contact_time", "time in contact", r"contact_time_fraction"),
     ("clearance_growth", "clearance growth", r"clearance_growth_m"),
     ("wear_life", "cycles to 50 % clearance growth", r"cycles_to_clearance_growth_50pct"),
+    ("friction_coefficient", "friction coefficient", r"film\.friction_coefficient"),
+    ("asperity_load_share", "asperity load share", r"film\.asperity_load_share"),
 )
 LIFE_KEYS = {  # a life run's milestones: their labels
     "hours_to_clearance_growth_50pct": "hours to 50 % clearance growth [h]",
@@ -358,6 +366,13 @@ def save_sweep_figures(
             figure = plot_sweep(table, columns, texts, titles[name])
             with suppress(ForeignFileError):  # a file of the user's of that name is kept
                 written.append(save_png(figure, path / f"{name}.png", dpi=120))
+    lubricated = stribeck_joints(table, joints)
+    if lubricated:
+        varied = next((p for p in texts if table[p].nunique() > 1), None)
+        notes = texts[varied] if varied else None
+        figure = plot_stribeck(table, lubricated, notes, varied)
+        with suppress(ForeignFileError):
+            written.append(save_png(figure, path / "stribeck.png", dpi=120))
     for stale in set(path.glob("*.png")) - set(written):
         remove(stale)
     return written

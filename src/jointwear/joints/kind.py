@@ -25,6 +25,7 @@ a kind. A kind gives:
 7. ``check_rows``: its rows in ``jointwear check``.
 8. ``figures``: its figures, each a file name and a function ``Results -> Figure`` of
    ``figures_module`` (its ``figures.py``), which also has ``save_figures(results, folder)``;
+   ``draws(figure, model)``: whether a model gets one of them (all, by default);
    ``animation_module``: how the animation draws its joints (an ``Actor`` each), with
    ``gap(joint)`` magnified. Both modules import matplotlib, and only they in the kind.
 9. Life runs (``studies.life``): ``life_runs``, whether they support the kind; the profiles
@@ -135,6 +136,10 @@ class ClearanceKind:
         body's initial angle minus the first's [rad].
         """
         raise NotImplementedError
+
+    def draws(self, figure: str, model: Any) -> bool:
+        """Whether ``model`` (with joints of this kind) gets ``figure``, one of ``figures``."""
+        return True
 
     def lookup(self, joint: Any) -> NDArray[np.float64]:
         """Data the kernel reads for ``joint`` beyond its row (a flat table); none by default."""

@@ -91,12 +91,13 @@ class RevoluteKind(ClearanceKind):
     )
     older_state_names = MappingProxyType({field: field for field in STATE_FIELDS})
     pins_points = True
-    figures = (  # the paper's Figs. 7-10
+    figures = (  # the paper's Figs. 7-10, and a finite bearing's film (``draws``)
         ("fig7_dynamics", "plot_dynamics"),
         ("fig7d_orbit", "plot_orbit"),
         ("fig8_wear_sectors", "plot_wear_sectors"),
         ("fig9_wear_polar", "plot_wear_polar"),
         ("fig10_profile", "plot_wear_profile"),
+        ("film_pressure", "plot_film_pressure"),
     )
     figures_with_ideal = frozenset({"fig7_dynamics"})
 
@@ -161,6 +162,13 @@ class RevoluteKind(ClearanceKind):
         param[jc.P_DEPTH_LIMIT] = ranges[PENETRATION]
         param[jc.P_PATCH_LIMIT] = ranges.get(HERTZ_PATCH, 0.0)  # 0: the patch is not checked
         return ints, param
+
+    @override
+    def draws(self, figure: str, model: object) -> bool:
+        """The film pressure only with a finite bearing (the other figures always)."""
+        if figure != "film_pressure":
+            return True
+        return any(reads_film_table(j.clearance.lubrication) for j in self.joints(model))
 
     @override
     def lookup(self, joint: object) -> NDArray[np.float64]:

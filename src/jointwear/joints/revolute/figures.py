@@ -1,9 +1,10 @@
 """Figures of the revolute clearance joints: P. Flores, Mech. Mach. Theory 44 (2009), section 6.
 
-Functions ``Results -> matplotlib Figure``, one per figure of the paper (Figs. 7-10), and
-``save_figures`` that writes them all; ``draw_life_profiles`` draws a joint's profiles in a
-life run's figure (``figures.life``). Angles on a joint surface are measured
-counter-clockwise in that surface's body frame from the body's x axis, as in the wear table.
+Functions ``Results -> matplotlib Figure``, one per figure of the paper (Figs. 7-10) and a
+finite bearing's film pressure (``film_figure``), and ``save_figures`` that writes them all;
+``draw_life_profiles`` draws a joint's profiles in a life run's figure (``figures.life``).
+Angles on a joint surface are measured counter-clockwise in that surface's body frame from
+the body's x axis, as in the wear table.
 """
 
 from __future__ import annotations
@@ -24,6 +25,7 @@ from ...figures.plan import crank_driver, kind_drawings
 from ...figures.scaling import length_unit
 from ...results import Results
 from . import KIND
+from .film_figure import plot_film_pressure as plot_film_pressure  # a kind's figure, drawn here
 from .schema import RevoluteJoint
 
 PROFILE_SHARE = 0.15  # Fig. 10: the largest wear depth is drawn as this share of the radius
