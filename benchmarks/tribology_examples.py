@@ -7,7 +7,8 @@ Prints three tables:
    bearing in mixed lubrication, as its numerical settings (tolerances, the impedance
    table's nodes and the film's cells) are halved and doubled.
 2. The slider-crank against the oil's viscosity: wear per turn, lambda, the asperities'
-   share of the load, friction coefficient and Hersey number (the Stribeck data).
+   share of the load, the friction power of the asperities and of the film, and the Hersey
+   number.
 3. The same for the paper's four-bar (examples/flores2009_fourbar_mixed.toml).
 
 Usage (from the repository root, after ``make install``; about two minutes)::
@@ -88,14 +89,15 @@ def settings_table() -> None:
 
 def viscosity_table(path: Path, joint: str, overrides: list[str]) -> None:
     print("| viscosity [Pa s] | wear per turn [mm^3] | time in solid contact | min lambda "
-          "| asperity share | friction coefficient | Hersey number |")  # fmt: skip
-    print("|---|---|---|---|---|---|---|")
+          "| asperity share | boundary friction [W] | film [W] | Hersey number |")  # fmt: skip
+    print("|---|---|---|---|---|---|---|---|")
     for viscosity in VISCOSITIES:
         entry = steady(path, joint, [*overrides, f"joints.{joint}.clearance.viscosity={viscosity}"])
         film = entry["film"]
+        powers = film["friction_power_boundary_w"], film["friction_power_viscous_w"]
         print(f"| {viscosity:g} | {entry['wear_per_cycle'] * 1e9:.3g} "
               f"| {entry['contact_time_fraction']:.1%} | {film['min_lambda']:.2f} "
-              f"| {film['asperity_load_share']:.3g} | {film['friction_coefficient']:.3f} "
+              f"| {film['asperity_load_share']:.3g} | {powers[0]:.3g} | {powers[1]:.3g} "
               f"| {film['hersey_number']:.3g} |")  # fmt: skip
 
 

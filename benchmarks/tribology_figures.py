@@ -1,16 +1,15 @@
-"""The lubricated slider-crank's film pressure and Stribeck curve, for the user guide.
+"""The film pressure of the lubricated slider-crank and the rig's Stribeck curve, for the docs.
 
-Sweeps ``examples/slider_crank_lubricated.toml`` over the viscosity (its own 0.01 Pa s among
-them), copies the 0.01 Pa s case's film pressure figure and the sweep's Stribeck curve into
-``docs/images/`` (``slider_crank_film_pressure.png``, ``slider_crank_stribeck.png``) and
-prints the numbers the user guide quotes: the film at the instant of the largest film force,
-and per case the Hersey number, friction coefficient, lambda_min and asperity share, with the
-share of the film's power that is shear (Couette) rather than pressure flow (squeeze and
-wedge), from the steady state's rows.
+Runs ``examples/slider_crank_lubricated.toml`` and draws its film pressure at the largest film
+force; sweeps ``examples/journal_bearing_rig.toml`` over the viscosity and takes its Stribeck
+curve. Writes ``docs/images/slider_crank_film_pressure.png`` and
+``docs/images/journal_bearing_stribeck.png`` and prints the numbers the user guide quotes:
+the film at that instant, and per case of the rig the Hersey number, friction coefficient,
+lambda_min and asperity share.
 
 Usage (from the repository root, after ``make install``)::
 
-    .venv/bin/python benchmarks/tribology_figures.py            # about 15 s
+    .venv/bin/python benchmarks/tribology_figures.py            # about three minutes
     .venv/bin/python benchmarks/tribology_figures.py --no-images
 """
 
@@ -27,15 +26,14 @@ import numpy as np
 import jointwear as jw
 from jointwear.joints.revolute.figures import plot_film_pressure
 from jointwear.joints.revolute.film_field import film_field
-from jointwear.kernels.laws.asperity import mean_gap
 
 ROOT = Path(__file__).parents[1]
 MODEL = ROOT / "examples" / "slider_crank_lubricated.toml"
+RIG = ROOT / "examples" / "journal_bearing_rig.toml"
 IMAGES = ROOT / "docs" / "images"
 JOINT = "rod_slider"
-VISCOSITY = f"joints.{JOINT}.clearance.viscosity"
-VALUES = ["0.001 Pa*s", "0.003 Pa*s", "0.01 Pa*s", "0.03 Pa*s", "0.1 Pa*s", "0.3 Pa*s"]
-EXAMPLE_CASE = "viscosity=0.01_Pa_s"  # the example's own oil
+VISCOSITY = "joints.bush.clearance.viscosity"
+VALUES = [f"{v} Pa*s" for v in ("0.0001", "0.0003", "0.001", "0.003", "0.01", "0.03", "0.1")]
 
 
 def film_report(results: jw.Results) -> str:
@@ -51,50 +49,28 @@ def film_report(results: jw.Results) -> str:
     )
 
 
-def shear_share(results: jw.Results) -> float:
-    """The Couette shear's share of the film's power over the steady state's rows [-].
-
-    Couette power 2 pi mu (R w_rel)^2 R L / (c sqrt(1 - eps^2)) with the film's eps, from
-    the mean gap as the kernel takes it (``film_field``); the rest of ``film_power`` is the
-    pressure flow, -F . V.
-    """
-    c = results.model.joint(JOINT).clearance
-    bearing, journal = results.model.joint(JOINT).bodies
-    ts = results.timeseries
-    rows = ts[ts["time"] >= results.summary["steady_state"]["from_s"]]
-    t = rows["time"].to_numpy()
-    delta = rows[f"{JOINT}_delta"].to_numpy()
-    gap = np.hypot(rows[f"{JOINT}_ex"], rows[f"{JOINT}_ey"]).to_numpy() - delta
-    eps = 1.0 - np.array([mean_gap(max(-d, 0.0), c.roughness) for d in delta]) / gap
-    u = c.journal_radius * (rows[f"omega_{journal}"] - rows[f"omega_{bearing}"]).to_numpy()
-    couette = 2 * math.pi * c.viscosity * u**2 * c.journal_radius * c.width
-    couette /= gap * np.sqrt(1.0 - eps**2)
-    return float(np.trapezoid(couette, t) / np.trapezoid(rows[f"{JOINT}_film_power"], t))
-
-
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--no-images", action="store_true", help="do not write docs/images")
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as folder:
-        out = Path(folder) / "sweep"
-        study = jw.sweep(MODEL, out, vary={VISCOSITY: VALUES})
-        example = jw.load_results(out / "cases" / EXAMPLE_CASE)
-        print(f"{JOINT}, {EXAMPLE_CASE}: {film_report(example)}")
-        film = f"{JOINT}.film."
-        print("| viscosity | Hersey number | friction coefficient | lambda_min | asperity share "
-              "| shear share of film power |")  # fmt: skip
-        print("|---|---|---|---|---|---|")
+        example = jw.run(MODEL, Path(folder) / "slider_crank", figures=False, ideal=False)
+        print(f"{JOINT}: {film_report(example)}")
+        out = Path(folder) / "stribeck"
+        study = jw.sweep(RIG, out, vary={VISCOSITY: VALUES})
+        film = "bush.film."
+        print("| viscosity | Hersey number | friction coefficient | lambda_min | asperity share |")
+        print("|---|---|---|---|---|")
         for _, case in study.table.sort_values(VISCOSITY).iterrows():
-            results = jw.load_results(out / "cases" / case["case"])
             print(
                 f"| {case[VISCOSITY]:g} Pa s | {case[film + 'hersey_number']:.3g} "
-                f"| {case[film + 'friction_coefficient']:.3f} | {case[film + 'min_lambda']:.2f} "
-                f"| {case[film + 'asperity_load_share']:.1%} | {shear_share(results):.1%} |"
+                f"| {case[film + 'friction_coefficient']:.4f} | {case[film + 'min_lambda']:.2f} "
+                f"| {case[film + 'asperity_load_share']:.1%} |"
             )
         if not args.no_images:
             plot_film_pressure(example).savefig(IMAGES / "slider_crank_film_pressure.png", dpi=120)
-            shutil.copyfile(out / "figures" / "stribeck.png", IMAGES / "slider_crank_stribeck.png")
+            stribeck = IMAGES / "journal_bearing_stribeck.png"
+            shutil.copyfile(out / "figures" / "stribeck.png", stribeck)
 
 
 if __name__ == "__main__":

@@ -329,14 +329,17 @@ def _film_summary(jc: object, c: object, totals: NDArray[np.float64], duration: 
     The thinnest film from the largest eccentricity ratio (in the unworn clearance); lambda
     is it over the roughness; the asperities' share of the load carried (time integrals of
     the solid contact's normal force and of the film force's magnitude); the friction
-    coefficient, boundary plus viscous friction energy over the integral of load x sliding
-    speed; the Hersey number mu N / P with the mean relative speed N [rev/s] and the mean
-    load carried over the projected area L 2 R_J [Pa]; the mean friction power of each kind.
+    coefficient, the work of boundary friction and of the film's shear torques over the
+    integral of load x sliding speed (for a steadily loaded bearing T_J / (R W); the film's
+    squeeze is not friction); the Hersey number mu N / P with the mean relative speed N
+    [rev/s] and the mean load carried over the projected area L 2 R_J [Pa]; the mean
+    friction power of each kind (viscous: all the film dissipates, squeeze included).
     """
     thinnest = c.radial_clearance * (1.0 - float(totals[jc.T_FILM_MAX]))
     solid, film = float(totals[jc.T_SOLID_IMPULSE]), float(totals[jc.T_FILM_IMPULSE])
     boundary, viscous = float(totals[jc.T_FRICTION_ENERGY]), float(totals[jc.T_FILM_ENERGY])
     moved = float(totals[jc.T_LOAD_SLIDING])
+    sheared = float(totals[jc.T_FILM_FRICTION])
     speed = float(totals[jc.T_SPIN]) / (2.0 * math.pi * duration) if duration else 0.0
     pressure = (solid + film) / duration / (c.width * 2.0 * c.journal_radius) if duration else 0.0
     roughness = getattr(c, "roughness", None)
@@ -344,7 +347,7 @@ def _film_summary(jc: object, c: object, totals: NDArray[np.float64], duration: 
         "min_film_thickness_m": thinnest,
         "min_lambda": thinnest / roughness if roughness else None,
         "asperity_load_share": solid / (solid + film) if solid + film > 0.0 else 0.0,
-        "friction_coefficient": (boundary + viscous) / moved if moved > 0.0 else None,
+        "friction_coefficient": (boundary + sheared) / moved if moved > 0.0 else None,
         "hersey_number": c.viscosity * speed / pressure if pressure > 0.0 else None,
         "friction_power_boundary_w": boundary / duration if duration else 0.0,
         "friction_power_viscous_w": viscous / duration if duration else 0.0,

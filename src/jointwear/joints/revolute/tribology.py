@@ -21,9 +21,12 @@ A lubricated joint also has, from its film columns:
 - ``<joint>_asperity_share`` [-]: the solid contact's share of the load, F_n / (F_n +
   |F_film|) (0 while neither carries any);
 - ``<joint>_friction_coefficient`` [-]: the friction power, boundary (friction_power) plus
-  viscous (film_power), over the whole load |F_n n + F_t t + F_film| times the sliding speed
-  R_J |omega_J - omega_B|: for a steadily loaded bearing, the classic T_J / (R W). NaN where
-  the journal does not turn in its bearing or nothing is loaded;
+  the film's shear torques' -(T_J omega_J + T_B omega_B), over the whole load |F_n n + F_t t
+  + F_film| times the sliding speed R_J |omega_J - omega_B|: for a steadily loaded bearing,
+  the classic T_J / (R W). The film's squeeze (its pressure flow as the journal moves
+  towards the wall) dissipates too, in film_power, but is not friction. T_B = -T_J - e x
+  F_film (the film's moments sum to zero). NaN where the journal does not turn in its
+  bearing or nothing is loaded;
 - ``<joint>_lambda`` [-] (with a roughness sigma): the film thickness over sigma, -delta /
   sigma, negative where the mean planes overlap.
 """
@@ -70,17 +73,19 @@ def _film_columns(
 ) -> dict[str, np.ndarray]:
     """A lubricated joint's ``FILM_COLUMNS`` (and lambda), one value per row."""
     c, name = joint.clearance, joint.name
-    column = {q: timeseries[f"{name}_{q}"].to_numpy() for q in
-              ("fn", "fx", "fy", "film_fx", "film_fy", "film_power", "delta")}  # fmt: skip
+    quantities = ("fn", "fx", "fy", "ex", "ey", "film_fx", "film_fy", "film_torque", "delta")
+    column = {q: timeseries[f"{name}_{q}"].to_numpy() for q in quantities}
     film = np.hypot(column["film_fx"], column["film_fy"])
     carried = column["fn"] + film
     share = np.divide(column["fn"], carried, out=np.zeros_like(carried), where=carried > 0.0)
-    spin = [timeseries[f"omega_{body}"].to_numpy() if body != "ground" else 0.0
-            for body in joint.bodies]  # fmt: skip
-    sliding = c.journal_radius * np.abs(spin[1] - spin[0]) * np.ones(len(timeseries))
+    w_b, w_j = (timeseries[f"omega_{body}"].to_numpy() if body != "ground" else 0.0
+                for body in joint.bodies)  # fmt: skip
+    sliding = c.journal_radius * np.abs(w_j - w_b) * np.ones(len(timeseries))
     load = np.hypot(column["fx"] + column["film_fx"], column["fy"] + column["film_fy"])
     moved = load * sliding
-    power = friction_power + column["film_power"]
+    t_j = column["film_torque"]
+    t_b = -t_j - (column["ex"] * column["film_fy"] - column["ey"] * column["film_fx"])
+    power = friction_power - (t_j * w_j + t_b * w_b)
     coefficient = np.divide(power, moved, out=np.full_like(moved, np.nan), where=moved > 0.0)
     columns = {f"{name}_asperity_share": share, f"{name}_friction_coefficient": coefficient}
     roughness = getattr(c, "roughness", None)

@@ -171,7 +171,8 @@ T_SOLID_IMPULSE = 15  # integral of the solid (asperity and bulk) normal force [
 T_FILM_IMPULSE = 16  # integral of the film force's magnitude [N s]
 T_LOAD_SLIDING = 17  # integral of the whole load x R_J |w_rel| [N m]
 T_SPIN = 18  # integral of |w_rel|, the relative angle turned [rad]
-N_TOTALS = 19
+T_FILM_FRICTION = 19  # work of the film's shear torques, -int (T_J w_J + T_B w_B) dt [J]
+N_TOTALS = 20
 
 # Columns of an onset's entry in the impact log.
 IMPACT_SPEED = 0  # penetration rate at onset [m/s]
@@ -522,13 +523,13 @@ def _track_film(table, k, c, totals, qd, h):
     """The film's energy and the integrals its summary needs, over a step of h [s]."""
     totals[T_FILM_ENERGY] += c[C_FILM_POWER] * h
     totals[T_FILM_IMPULSE] += math.hypot(c[C_FILM_X], c[C_FILM_Y]) * h
-    spin = abs(
-        angular_velocity(qd, table.ints[k, I_JOURNAL])
-        - angular_velocity(qd, table.ints[k, I_BEARING])
-    )
+    w_j = angular_velocity(qd, table.ints[k, I_JOURNAL])
+    w_b = angular_velocity(qd, table.ints[k, I_BEARING])
+    spin = abs(w_j - w_b)
     load = math.hypot(c[C_FX] + c[C_FILM_X], c[C_FY] + c[C_FILM_Y])
     totals[T_LOAD_SLIDING] += load * table.params[k, P_RJ] * spin * h
     totals[T_SPIN] += spin * h
+    totals[T_FILM_FRICTION] -= (c[C_FILM_TJ] * w_j + c[C_FILM_TB] * w_b) * h
 
 
 @njit(cache=True, no_cpython_wrapper=True)
