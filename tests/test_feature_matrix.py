@@ -40,6 +40,7 @@ EXAMPLE_END = {
     "flores2009_fourbar_mixed": 0.02,
     "fourbar_two_clearances": 0.02,
     "fourbar_four_clearances": 0.02,
+    "journal_bearing_rig": 0.01,
     "pendulum": 0.05,
     "slider_crank": 0.006,
     "slider_crank_clearance": 0.006,
