@@ -452,7 +452,9 @@ def fourbar_bodies(fourbar: FourBar = PAPER_FOURBAR) -> dict[str, tuple[float, f
 # Sommerfeld number S = (R/c)^2 mu N / P and the attitude angle phi [deg] at the eccentricity
 # ratios RAIMONDI_BOYD_EPS, by L / D. Transcribed from their charts in a course tool found in
 # the public code index (search verb ``find_string "1.33, 0.631"``, file id 69000706882; the
-# tool names no source; S to 3 figures, phi read to 0.5 deg).
+# tool names no source; S to 3 figures, phi read to 0.5 deg). Its L / D = 1 values agree with
+# the three-figure table below; L / D = 2 is not among the charts textbooks reproduce from
+# Raimondi and Boyd (infinite, 1, 1/2, 1/4), so its row is a chart reading of unchecked origin.
 RAIMONDI_BOYD_EPS = (0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 0.95)
 RAIMONDI_BOYD = {
     0.5: (

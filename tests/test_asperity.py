@@ -20,7 +20,6 @@ from jointwear.kernels.laws import asperity
 from jointwear.kernels.laws.asperity import (
     asperity_energy,
     asperity_load,
-    asperity_pressure,
     f52,
     mean_gap,
 )
@@ -97,11 +96,6 @@ def test_the_fit_is_smooth_to_zero_at_lambda_4_and_zero_beyond():
 def test_the_fit_falls_as_the_gap_opens():
     values = [f52(lam) for lam in np.linspace(-3.0, 4.0, 71)]
     assert all(a > b for a, b in itertools.pairwise(values))
-
-
-def test_the_pressure_is_k_e_f52():
-    k, e_star, sigma = 2.4e-4, 115e9, 0.4e-6
-    assert asperity_pressure(0.6e-6, sigma, k, e_star) == pytest.approx(k * e_star * f52(1.5))
 
 
 # ---------------------------------------------------------------- E' and the constant

@@ -15,6 +15,7 @@ from scipy.integrate import dblquad, quad, solve_bvp
 
 from jointwear.kernels.laws.lubrication import (
     FilmModel,
+    couette_torque,
     film_force_components,
     film_power_loss,
     film_torques,
@@ -37,16 +38,17 @@ def components(model, eps, eps_dot, gamma_dot, w, *fluid):
     return film_force_components(model, NO_TABLE, eps, eps_dot, gamma_dot, w, *fluid)
 
 
-def power_loss(model, eps, eps_dot, gamma_dot, w, w_rel, *fluid):
+def power_loss(model, eps, eps_dot, gamma_dot, w, w_rel, mu, r, width, c):
     """The film's power loss [W] at the model's own force."""
-    f_r, f_t = components(model, eps, eps_dot, gamma_dot, w, *fluid)
-    return film_power_loss(f_r, f_t, eps, eps_dot, gamma_dot, w, w_rel, *fluid)
+    f_r, f_t = components(model, eps, eps_dot, gamma_dot, w, mu, r, width, c)
+    couette = couette_torque(eps, w_rel, mu, r, width, c)
+    return film_power_loss(f_r, f_t, couette, eps, eps_dot, gamma_dot, w, w_rel, c)
 
 
 def torques(model, eps, eps_dot, gamma_dot, w, w_rel, mu, r, width, c):
     """The film's shear torques (journal, bearing) [N m] at the model's own force."""
     _, f_t = components(model, eps, eps_dot, gamma_dot, w, mu, r, width, c)
-    return film_torques(f_t, eps, w_rel, mu, r, width, c)
+    return film_torques(f_t, couette_torque(eps, w_rel, mu, r, width, c), c * eps)
 
 
 # scipy's adaptive quadrature is asked for 1e-11 relative; the integrands are smooth
@@ -373,6 +375,36 @@ def test_bodies_lose_what_the_film_dissipates(model, eps, eps_dot, gamma_dot, om
     scale = abs(f_r * C * eps_dot) + abs(f_t * C * eps * gamma_dot)
     scale += abs(t_j * omega_j) + abs(t_b * omega_b)
     # Subnormal powers (below 2.2e-308 W) keep fewer digits than 1e-12: a floor of 1e-300 W.
+    assert -on_bodies == pytest.approx(loss, rel=1e-12, abs=1e-12 * scale + 1e-300)
+    assert t_j + t_b == pytest.approx(-C * eps * f_t, rel=1e-12, abs=1e-12 * abs(t_j) + 1e-300)
+
+
+@settings(max_examples=200, deadline=None)
+@given(
+    model=st.sampled_from([SHORT, LONG]),
+    eps=st.floats(0.0, 0.999),
+    film_eps=st.floats(0.0, 0.999),
+    eps_dot=st.floats(-1e3, 1e3),
+    gamma_dot=st.floats(-1e3, 1e3),
+    omega_j=st.floats(-2e3, 2e3),
+    omega_b=st.floats(-2e3, 2e3),
+)
+def test_a_film_at_another_eccentricity_still_balances(
+    model, eps, film_eps, eps_dot, gamma_dot, omega_j, omega_b
+):
+    # The joint evaluates a film at another eccentricity ratio than the journal's (the short
+    # and long bearings held at film_breakdown, a mixed film at its mean gap): the force and
+    # the Couette torque are the film's, the pressure part of the power and the torques'
+    # offset take the journal's own e. The moments then sum to zero (the force pair's couple
+    # is e f_t with the real e) and the bodies lose what the film is said to dissipate.
+    w, w_rel = omega_j + omega_b, omega_j - omega_b
+    f_r, f_t = components(model, film_eps, eps_dot, gamma_dot, w, MU, R, L, C)
+    couette = couette_torque(film_eps, w_rel, MU, R, L, C)
+    t_j, t_b = film_torques(f_t, couette, C * eps)
+    loss = film_power_loss(f_r, f_t, couette, eps, eps_dot, gamma_dot, w, w_rel, C)
+    on_bodies = f_r * C * eps_dot + f_t * C * eps * gamma_dot + t_j * omega_j + t_b * omega_b
+    scale = abs(f_r * C * eps_dot) + abs(f_t * C * eps * gamma_dot)
+    scale += abs(t_j * omega_j) + abs(t_b * omega_b)
     assert -on_bodies == pytest.approx(loss, rel=1e-12, abs=1e-12 * scale + 1e-300)
     assert t_j + t_b == pytest.approx(-C * eps * f_t, rel=1e-12, abs=1e-12 * abs(t_j) + 1e-300)
 

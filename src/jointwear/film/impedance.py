@@ -99,7 +99,7 @@ def impedance_table(width_over_diameter: float) -> NDArray[np.float64]:
                 f"bearing needs a width-to-diameter ratio 0 < L / D <= {MAX_FILM_RATIO:g}"
             ]
         )
-    return _cached_table(ratio).copy()
+    return _cached_table(float(f"{ratio:.12g}")).copy()  # 12 digits: one table, one file
 
 
 def build_table(
@@ -170,8 +170,8 @@ def cache_folder() -> Path:
 
 
 def cache_file(width_over_diameter: float) -> Path:
-    """The cache file of an L / D (exact: the float's repr is in the name)."""
-    return cache_folder() / f"finite_bearing_v{SOLVER_VERSION}_ld{width_over_diameter!r}.npy"
+    """The cache file of an L / D (rounded to 12 significant digits by ``impedance_table``)."""
+    return cache_folder() / f"finite_bearing_v{SOLVER_VERSION}_ld{width_over_diameter:.12g}.npy"
 
 
 @functools.lru_cache(maxsize=32)

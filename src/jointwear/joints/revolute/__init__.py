@@ -105,7 +105,10 @@ class RevoluteKind(ClearanceKind):
     @override
     def peaks(self) -> tuple[int, ...]:
         js = self.module
-        return (js.T_MAX_FN, js.T_MAX_DELTA, js.T_PATCH_MAX, js.T_DEPTH_MAX, js.T_FILM_MAX)
+        return (
+            *(js.T_MAX_FN, js.T_MAX_DELTA, js.T_PATCH_MAX, js.T_DEPTH_MAX, js.T_FILM_MAX),
+            js.T_FILM_CLOSURE,
+        )
 
     @property
     @override
@@ -326,16 +329,17 @@ def _film_rows(c: object) -> list[tuple]:
 def _film_summary(jc: object, c: object, totals: NDArray[np.float64], duration: float) -> dict:
     """What a tribologist reads of a lubricated joint over ``duration`` [s] (its totals).
 
-    The thinnest film from the largest eccentricity ratio (in the unworn clearance); lambda
-    is it over the roughness; the asperities' share of the load carried (time integrals of
+    The thinnest film (negative: the mean planes overlapped); lambda is it over the
+    roughness; the asperities' share of the load carried (time integrals of
     the solid contact's normal force and of the film force's magnitude); the friction
-    coefficient, the work of boundary friction and of the film's shear torques over the
-    integral of load x sliding speed (for a steadily loaded bearing T_J / (R W); the film's
-    squeeze is not friction); the Hersey number mu N / P with the mean relative speed N
-    [rev/s] and the mean load carried over the projected area L 2 R_J [Pa]; the mean
-    friction power of each kind (viscous: all the film dissipates, squeeze included).
+    coefficient, the work of boundary friction and of the film's friction (what it
+    dissipates less the radial squeeze, -f_r d(delta)/dt) over the integral of load x sliding
+    speed (for a steadily loaded bearing T_J / (R W)); the Hersey number mu N / P with the
+    mean relative speed N [rev/s] and the mean load carried over the projected area L 2 R_J
+    [Pa]; the mean friction power of each kind (viscous: all the film dissipates, squeeze
+    included).
     """
-    thinnest = c.radial_clearance * (1.0 - float(totals[jc.T_FILM_MAX]))
+    thinnest = c.radial_clearance - float(totals[jc.T_FILM_CLOSURE])
     solid, film = float(totals[jc.T_SOLID_IMPULSE]), float(totals[jc.T_FILM_IMPULSE])
     boundary, viscous = float(totals[jc.T_FRICTION_ENERGY]), float(totals[jc.T_FILM_ENERGY])
     moved = float(totals[jc.T_LOAD_SLIDING])

@@ -103,6 +103,12 @@ class RevoluteClearance(ClearanceTable):
                 "film barely changes beyond: at L/D = 20 it is the infinitely long bearing's "
                 "within 0.3 %)"
             )
+        if self.wear_distribution == "elastic_foundation":
+            problems.append(
+                "wear_distribution 'elastic_foundation' spreads the wear over where the worn "
+                "surfaces interfere, and the asperities of a finite bearing's mixed film also "
+                'touch before they do: choose wear_distribution "hertz" or "peak"'
+            )
         if ASPERITY_START * self.roughness >= self.radial_clearance:
             problems.append(
                 f"roughness {self.roughness * 1e6:.4g} um: its asperities would touch with the "

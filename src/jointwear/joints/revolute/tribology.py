@@ -21,12 +21,10 @@ A lubricated joint also has, from its film columns:
 - ``<joint>_asperity_share`` [-]: the solid contact's share of the load, F_n / (F_n +
   |F_film|) (0 while neither carries any);
 - ``<joint>_friction_coefficient`` [-]: the friction power, boundary (friction_power) plus
-  the film's shear torques' -(T_J omega_J + T_B omega_B), over the whole load |F_n n + F_t t
-  + F_film| times the sliding speed R_J |omega_J - omega_B|: for a steadily loaded bearing,
-  the classic T_J / (R W). The film's squeeze (its pressure flow as the journal moves
-  towards the wall) dissipates too, in film_power, but is not friction. T_B = -T_J - e x
-  F_film (the film's moments sum to zero). NaN where the journal does not turn in its
-  bearing or nothing is loaded;
+  the film's (film_power less the radial squeeze's -f_r d(delta)/dt, which is not
+  friction), over the whole load |F_n n + F_t t + F_film| times the sliding speed R_J
+  |omega_J - omega_B|: for a steadily loaded bearing, the classic T_J / (R W), and the same
+  in any frame. NaN where the journal does not turn in its bearing or nothing is loaded;
 - ``<joint>_lambda`` [-] (with a roughness sigma): the film thickness over sigma, -delta /
   sigma, negative where the mean planes overlap.
 """
@@ -37,7 +35,6 @@ import numpy as np
 import pandas as pd
 
 COLUMNS = ("p_max", "p_mean", "pv", "friction_power", "damping_power")  # after the joint's own
-FILM_COLUMNS = ("asperity_share", "friction_coefficient")  # a lubricated joint's, then lambda
 
 
 def tribology_columns(joint: object, timeseries: pd.DataFrame) -> dict[str, np.ndarray]:
@@ -71,9 +68,9 @@ def tribology_columns(joint: object, timeseries: pd.DataFrame) -> dict[str, np.n
 def _film_columns(
     joint: object, timeseries: pd.DataFrame, friction_power: np.ndarray
 ) -> dict[str, np.ndarray]:
-    """A lubricated joint's ``FILM_COLUMNS`` (and lambda), one value per row."""
+    """A lubricated joint's asperity_share, friction_coefficient (and lambda), per row."""
     c, name = joint.clearance, joint.name
-    quantities = ("fn", "fx", "fy", "ex", "ey", "film_fx", "film_fy", "film_torque", "delta")
+    quantities = ("fn", "fx", "fy", "ex", "ey", "film_fx", "film_fy", "film_power", "delta")
     column = {q: timeseries[f"{name}_{q}"].to_numpy() for q in quantities}
     film = np.hypot(column["film_fx"], column["film_fy"])
     carried = column["fn"] + film
@@ -83,9 +80,11 @@ def _film_columns(
     sliding = c.journal_radius * np.abs(w_j - w_b) * np.ones(len(timeseries))
     load = np.hypot(column["fx"] + column["film_fx"], column["fy"] + column["film_fy"])
     moved = load * sliding
-    t_j = column["film_torque"]
-    t_b = -t_j - (column["ex"] * column["film_fy"] - column["ey"] * column["film_fx"])
-    power = friction_power - (t_j * w_j + t_b * w_b)
+    e = np.hypot(column["ex"], column["ey"])
+    pushed = column["ex"] * column["film_fx"] + column["ey"] * column["film_fy"]
+    radial = np.divide(pushed, e, out=np.zeros_like(e), where=e > 0.0)
+    rate = timeseries[f"{name}_delta_dot"].to_numpy()
+    power = friction_power + column["film_power"] + radial * rate
     coefficient = np.divide(power, moved, out=np.full_like(moved, np.nan), where=moved > 0.0)
     columns = {f"{name}_asperity_share": share, f"{name}_friction_coefficient": coefficient}
     roughness = getattr(c, "roughness", None)

@@ -9,8 +9,10 @@ contact period is under way, its impact speed, and both surfaces' worn profiles.
 Penetration (paper Eq. 15, SPEC secs. 3-4): delta = abs(e) - (c + w_B(theta_B) + w_J(theta_J)),
 the wear depths w read from the sector profiles in each body's frame (``wear.depth_at``). The
 force law is applied for any delta > 0, so the force is continuous; the contact tolerance only
-decides when a contact period begins. Until the loop has recorded the onset of a period, the
-damping uses the current penetration rate as the impact speed, floored at ``min_impact_speed``.
+decides when a contact period begins. A mixed film (a roughness) adds the asperities' load to
+the normal force from four roughnesses before the surfaces touch (``_film``). Until the loop
+has recorded the onset of a period, the damping uses the current penetration rate as the
+impact speed, floored at ``min_impact_speed``.
 The rate of penetration is n . de/dt: the slope of the worn profile (wear depths of the order
 of 1e-8 m against a clearance of 1e-4 m) is neglected in it.
 
@@ -29,7 +31,12 @@ from numba import njit
 from ..kinematics import angular_velocity
 from ..laws.asperity import asperity_energy, asperity_load, mean_gap
 from ..laws.foundation import foundation_load, foundation_points, spread_foundation_wear
-from ..laws.lubrication import film_force_components, film_power_loss, film_torques
+from ..laws.lubrication import (
+    couette_torque,
+    film_force_components,
+    film_power_loss,
+    film_torques,
+)
 from ..laws.normal import ElasticLaw
 from ..laws.user import (
     NoUserLaws,
@@ -171,8 +178,9 @@ T_SOLID_IMPULSE = 15  # integral of the solid (asperity and bulk) normal force [
 T_FILM_IMPULSE = 16  # integral of the film force's magnitude [N s]
 T_LOAD_SLIDING = 17  # integral of the whole load x R_J |w_rel| [N m]
 T_SPIN = 18  # integral of |w_rel|, the relative angle turned [rad]
-T_FILM_FRICTION = 19  # work of the film's shear torques, -int (T_J w_J + T_B w_B) dt [J]
-N_TOTALS = 20
+T_FILM_FRICTION = 19  # the film's friction: its dissipation less the radial squeeze's [J]
+T_FILM_CLOSURE = 20  # largest c - h, nominal clearance less the film's thickness [m]
+N_TOTALS = 21
 
 # Columns of an onset's entry in the impact log.
 IMPACT_SPEED = 0  # penetration rate at onset [m/s]
@@ -389,8 +397,10 @@ def _film(table, k, out, e, gap, delta, nx, ny, delta_dot, gamma_dot, w, w_rel):
     f_r, f_t = film_force_components(law[I_LUBRICATION], table.lookups[k], *args, *fluid)
     out[C_FILM_X] = weight * (f_r * nx - f_t * ny)
     out[C_FILM_Y] = weight * (f_r * ny + f_t * nx)
-    out[C_FILM_POWER] = weight * film_power_loss(f_r, f_t, *args, w_rel, *fluid)
-    t_journal, t_bearing = film_torques(f_t, eps, w_rel, *fluid)
+    couette = couette_torque(eps, w_rel, *fluid)
+    motion = (e / gap, delta_dot / gap, gamma_dot, w, w_rel, gap)  # the journal's own
+    out[C_FILM_POWER] = weight * film_power_loss(f_r, f_t, couette, *motion)
+    t_journal, t_bearing = film_torques(f_t, couette, e)
     out[C_FILM_TJ] = weight * t_journal
     out[C_FILM_TB] = weight * t_bearing
 
@@ -529,7 +539,10 @@ def _track_film(table, k, c, totals, qd, h):
     load = math.hypot(c[C_FX] + c[C_FILM_X], c[C_FY] + c[C_FILM_Y])
     totals[T_LOAD_SLIDING] += load * table.params[k, P_RJ] * spin * h
     totals[T_SPIN] += spin * h
-    totals[T_FILM_FRICTION] -= (c[C_FILM_TJ] * w_j + c[C_FILM_TB] * w_b) * h
+    e = math.hypot(c[C_EX], c[C_EY])
+    radial = (c[C_FILM_X] * c[C_EX] + c[C_FILM_Y] * c[C_EY]) / e if e > 0.0 else 0.0
+    totals[T_FILM_FRICTION] += (c[C_FILM_POWER] + radial * c[C_DDOT]) * h
+    totals[T_FILM_CLOSURE] = max(totals[T_FILM_CLOSURE], table.params[k, P_C] + c[C_DELTA])
 
 
 @njit(cache=True, no_cpython_wrapper=True)

@@ -91,16 +91,6 @@ def f52(lam: float) -> float:
 
 
 @njit(cache=True)
-def asperity_pressure(h: float, sigma: float, k_gt: float, e_prime: float) -> float:
-    """Greenwood-Tripp asperity pressure p_a = k_gt E' F_5/2(h / sigma) [Pa].
-
-    h [m] is the local mean-plane separation, sigma [m] the combined roughness, k_gt [-] the
-    constant of ``model.laws.lubrication.asperity_constant``, e_prime [Pa] the contact modulus E*.
-    """
-    return k_gt * e_prime * f52(h / sigma)
-
-
-@njit(cache=True)
 def asperity_load(h_min: float, sigma: float, scale: float, r_star: float, width: float) -> float:
     """Total asperity load W [N] on a journal with minimum mean-plane gap h_min [m].
 

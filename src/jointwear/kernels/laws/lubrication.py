@@ -85,7 +85,11 @@ gives the journal T_J = -T_c - e f_t / 2 and the bearing T_B = T_c - e f_t / 2, 
 Couette torque T_c = 2 pi mu R^3 L w_rel / (c sqrt(1 - eps^2)) (the classic journal and
 bearing torques; Hamrock et al. 2004). With the film force at the two centres (a couple
 e f_t) the film's moments sum to zero, and the power the bodies lose to the film,
--(f . de/dt + T_J omega_J + T_B omega_B), is exactly the Phi above, for every s.
+-(f . de/dt + T_J omega_J + T_B omega_B), is exactly the Phi above, for every s. A film
+evaluated at another eccentricity ratio than the journal's (the short and long bearings held
+at film_breakdown, a mixed film at its mean gap) keeps this: T_c is the film's, at its own
+eps, while e and the rates in the pressure part and the torques are the journal's own, so
+the moments still balance and Phi is still what the bodies lose.
 
 References
 ----------
@@ -232,43 +236,48 @@ def film_force_components(
 
 
 @njit(cache=True)
+def couette_torque(eps: float, w_rel: float, mu: float, r: float, width: float, c: float) -> float:
+    """Couette shear torque T_c = 2 pi mu R^3 L w_rel / (c sqrt(1 - eps^2)) [N m].
+
+    The shear of a full film at eccentricity ratio eps [-]; w_rel = omega_journal -
+    omega_bearing [rad/s]; T_c w_rel is its power, 2 pi mu (R w_rel)^2 R L / (c sqrt(1 -
+    eps^2)) (Petroff's at eps = 0).
+    """
+    return 2.0 * math.pi * mu * r**3 * width * w_rel / (c * math.sqrt(1.0 - eps * eps))
+
+
+@njit(cache=True)
 def film_power_loss(
     f_r: float,
     f_t: float,
+    couette: float,
     eps: float,
     eps_dot: float,
     gamma_dot: float,
     w: float,
     w_rel: float,
-    mu: float,
-    r: float,
-    width: float,
     c: float,
 ) -> float:
-    """Viscous power dissipated in the film [W] of film force (f_r, f_t) [N], never negative.
+    """Power dissipated in the film [W] of film force (f_r, f_t) [N], never negative.
 
-    Phi = 2 pi mu (R w_rel)^2 R L / (c sqrt(1 - eps^2))
-          + c [eps (w - 2 gamma_dot) f_t / 2 - eps_dot f_r],
-    the Couette shear over the whole circumference plus the pressure flow, int h^3 / (12 mu)
-    |grad p|^2 dA = -F . V for any film whose pressure vanishes where it cavitates (module
-    docstring). w_rel = omega_journal - omega_bearing [rad/s].
+    Phi = T_c w_rel + c [eps (w - 2 gamma_dot) f_t / 2 - eps_dot f_r]: the Couette shear
+    (``couette_torque`` T_c [N m], at the film's own eccentricity ratio) plus the pressure
+    flow, int h^3 / (12 mu) |grad p|^2 dA = -F . V for any film whose pressure vanishes where
+    it cavitates (module docstring). eps, eps_dot [-, 1/s]: the journal's own eccentricity
+    ratio and rate, e / c, so that Phi is what the bodies lose; w_rel = omega_journal -
+    omega_bearing [rad/s].
     """
-    u = r * w_rel
-    couette = 2.0 * math.pi * mu * u * u * r * width / (c * math.sqrt(1.0 - eps * eps))
-    pressure = c * (0.5 * eps * (w - 2.0 * gamma_dot) * f_t - eps_dot * f_r)
-    return couette + pressure
+    return couette * w_rel + c * (0.5 * eps * (w - 2.0 * gamma_dot) * f_t - eps_dot * f_r)
 
 
 @njit(cache=True)
-def film_torques(
-    f_t: float, eps: float, w_rel: float, mu: float, r: float, width: float, c: float
-) -> tuple[float, float]:
+def film_torques(f_t: float, couette: float, e: float) -> tuple[float, float]:
     """Shear torques of the film (on the journal, on the bearing) [N m].
 
-    T_J = -T_c - c eps f_t / 2, T_B = T_c - c eps f_t / 2, T_c = 2 pi mu R^3 L w_rel /
-    (c sqrt(1 - eps^2)); f_t [N] the film force's tangential part; w_rel = omega_journal -
-    omega_bearing [rad/s] (module docstring).
+    T_J = -T_c - e f_t / 2, T_B = T_c - e f_t / 2 with the Couette torque T_c [N m]
+    (``couette_torque``), the film force's tangential part f_t [N] and the journal's
+    eccentricity e [m]: with the force pair at the two centres, whose moment is e f_t, the
+    film's moments sum to zero (module docstring).
     """
-    couette = 2.0 * math.pi * mu * r**3 * width * w_rel / (c * math.sqrt(1.0 - eps * eps))
-    offset = 0.5 * c * eps * f_t
+    offset = 0.5 * e * f_t
     return -couette - offset, couette - offset
