@@ -35,8 +35,9 @@ def _top_level(tree: ast.Module) -> set[ast.AST]:
     return {node for _, node in _imports(tree) if node not in inside}
 
 
-SCIPY_USERS = {  # the .mat writer, the interpolants of a table function, sampled studies
+SCIPY_USERS = {  # the .mat writer, the interpolants of a table function, sampled studies, films
     SOURCE / "results" / "export.py",
+    SOURCE / "film" / "reynolds.py",
     SOURCE / "mechanism" / "functions.py",
     *(SOURCE / "studies" / "sample" / f"{name}.py"
       for name in ("distributions", "design", "statistics", "sensitivity")),

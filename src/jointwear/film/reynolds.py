@@ -59,11 +59,7 @@ analysis and design", ASLE Trans. 1 (1958) 159-209.
 from dataclasses import dataclass
 
 import numpy as np
-import scipy.sparse as sparse
 from numpy.typing import NDArray
-from scipy.linalg import solveh_banded
-from scipy.sparse.linalg import splu
-from scipy.special import ellipkinc
 
 N_ANGLE = 96  # cells around the film (even: the faces are symmetric about a = 0)
 N_AXIAL = 16  # cells across the half width
@@ -281,6 +277,8 @@ def _solve_free(grid: FilmGrid, b: NDArray[np.float64], free: NDArray[np.bool_])
     ring is a band of half-width n_axial (LAPACK's banded Cholesky); a ring with no such place
     goes to SuperLU.
     """
+    from scipy.linalg import solveh_banded  # scipy loads where a film is solved
+
     n_a, n_z = grid.shape
     diagonal = np.where(free, grid.diagonal, 1.0)
     axial = grid.axial * (free[:, :-1] & free[:, 1:])
@@ -304,6 +302,9 @@ def _solve_free(grid: FilmGrid, b: NDArray[np.float64], free: NDArray[np.bool_])
             solved = solveh_banded(band, rhs[order].ravel(), check_finite=False)
             pressure[order] = solved.reshape(order.size, n_z)
         return pressure
+    from scipy import sparse
+    from scipy.sparse.linalg import splu
+
     index = np.arange(n_a * n_z).reshape(n_a, n_z)
     rows = np.concatenate([index[:, :-1].ravel(), index.ravel()])
     cols = np.concatenate([index[:, 1:].ravel(), np.roll(index, -1, axis=0).ravel()])
@@ -333,6 +334,8 @@ def _density_integral(eps: float, a: NDArray[np.float64]) -> NDArray[np.float64]
     With t = pi - 2 u, 1 - eps cos t = (1 + eps)(1 - m sin^2 u), m = 2 eps / (1 + eps): the
     first part is 2 / sqrt(1 + eps) (F(pi/2 | m) - F(pi/2 - a/2 | m)).
     """
+    from scipy.special import ellipkinc
+
     m = 2.0 * eps / (1.0 + eps)
     elliptic = ellipkinc(0.5 * np.pi, m) - ellipkinc(0.5 * np.pi - 0.5 * a, m)
     return 2.0 / np.sqrt(1.0 + eps) * elliptic + _FAR_DENSITY * a

@@ -185,8 +185,11 @@ class ClearanceTable(_LawKeys):
     shear_strength
         tau [Pa] (``reye``).
     viscosity, film_breakdown
-        The lubricant's dynamic viscosity [Pa s] and the eccentricity ratio [-] where the film
-        hands over to solid contact.
+        The lubricant's dynamic viscosity [Pa s] and, for the short and long bearings, the
+        eccentricity ratio [-] where the film hands over to solid contact (numerical).
+    roughness, roughness_parameter, asperity_slope
+        The finite bearing's mixed film: the surfaces' combined RMS roughness sigma [m], eta
+        sigma beta [-] and sigma / beta [-] of their asperities (Greenwood and Tripp).
     """
 
     FAMILIES: ClassVar[tuple[Family, ...]] = SHARED
