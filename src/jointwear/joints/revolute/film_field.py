@@ -29,7 +29,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ...film.reynolds import film_grid, solve_film
-from ...kernels.laws.asperity import mean_gap
+from ...kernels.laws.asperity import film_eccentricity
 from ...model.laws.lubrication import reads_film_table
 from ...results import Results
 
@@ -152,7 +152,7 @@ def film_field(results: Results, joint: str, time: float | None = None) -> FilmF
     e = math.hypot(ex, ey)
     gap = e - delta
     direction = _line_of_centres(ex, ey, v_x, v_y)
-    eps = max(0.0, 1.0 - mean_gap(max(-delta, 0.0), c.roughness) / gap)  # it has a roughness
+    eps = film_eccentricity(delta, gap, c.roughness)  # the kernel's own
     cos, sin = math.cos(direction), math.sin(direction)
     v_r = v_x * cos + v_y * sin
     v_t = (-v_x * sin + v_y * cos) * (gap * eps / e if e > 0.0 else 0.0)

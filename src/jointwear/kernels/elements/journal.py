@@ -29,7 +29,7 @@ import numpy as np
 from numba import njit
 
 from ..kinematics import angular_velocity
-from ..laws.asperity import asperity_energy, asperity_load, mean_gap
+from ..laws.asperity import asperity_energy, asperity_load, film_eccentricity
 from ..laws.foundation import foundation_load, foundation_points, spread_foundation_wear
 from ..laws.lubrication import (
     couette_torque,
@@ -383,7 +383,7 @@ def _film(table, k, out, e, gap, delta, nx, ny, delta_dot, gamma_dot, w, w_rel):
     if roughness > 0.0:
         apart = max(-delta, 0.0)  # the mean planes' gap; the bulk law takes any overlap
         out[C_ASPERITY] = asperity_load(apart, roughness, p[P_ASPERITY], p[P_RSTAR], p[P_WIDTH])
-        eps = max(0.0, 1.0 - mean_gap(apart, roughness) / gap)
+        eps = film_eccentricity(delta, gap, roughness)
     else:
         breakdown = p[P_BREAKDOWN]
         if delta > 0.0:

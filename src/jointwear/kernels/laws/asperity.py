@@ -134,3 +134,14 @@ def mean_gap(h: float, sigma: float) -> float:
     lam = h / sigma
     below = 0.5 * math.erfc(-lam * _INV_SQRT_2)  # Phi(lam)
     return sigma * (lam * below + _INV_SQRT_2PI * math.exp(-0.5 * lam * lam))
+
+
+@njit(cache=True)
+def film_eccentricity(delta: float, gap: float, sigma: float) -> float:
+    """The mixed film's eccentricity ratio [-]: 1 - mean_gap(max(-delta, 0), sigma) / gap.
+
+    delta [m]: the penetration (minus the film thickness); gap [m]: the local clearance;
+    sigma [m]: the roughness. Below touching mean planes the film keeps their mean gap
+    (docs/theory.md, section 6); never below 0.
+    """
+    return max(0.0, 1.0 - mean_gap(max(-delta, 0.0), sigma) / gap)
