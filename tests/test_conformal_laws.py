@@ -14,7 +14,7 @@ from scipy.optimize import brentq
 from jointwear.kernels.laws.normal import (
     Damping,
     ElasticLaw,
-    damped,
+    damped_by,
     elastic_energy,
     elastic_force,
     elastic_stiffness,
@@ -165,7 +165,7 @@ def test_single_impact_restitution_with_every_elastic_law(law, damping, c_e):
 
     def rhs(t, y):
         elastic = elastic_force(law, y[0], k, n, E_STAR, D_R, WIDTH)
-        return [y[1], -damped(elastic, y[1], v_minus, damping, c_e) / mass]
+        return [y[1], -damped_by(elastic, y[1], v_minus, hysteresis_factor(damping, c_e)) / mass]
 
     def separation(t, y):
         return y[0]

@@ -16,6 +16,8 @@ ALLOWED = {"math", "numpy", "numba", "typing", "enum"}
 EXTRA = {
     "__init__.py": {"os", "sys"},  # JOINTWEAR_PLAIN_NUMBA, the cache-installing finder
     "cache.py": {"hashlib", "os", "pickle", "contextlib", "sys"},  # stamp, index, warning
+    "laws/dispatch.py": {"collections"},  # collections.abc, for type hints
+    "laws/lawset.py": {"collections"},
 }
 
 

@@ -5,17 +5,19 @@ record names, at a few sample points; the two must agree exactly, and the laws o
 must differ at those points (so that a dispatch that reached another law would be seen).
 """
 
-import inspect
 import math
 from pathlib import Path
 
 import numpy as np
 import pytest
+from numba import njit
 
 import jointwear as jw
 from jointwear.citations import REFERENCES
 from jointwear.film.impedance import impedance_table
 from jointwear.joints.revolute.schema import RevoluteClearance as Clearance
+from jointwear.kernels.laws.lawset import LawSet
+from jointwear.kernels.laws.user import COMPILED, kind_laws
 from jointwear.model.clearance import _KEY_TYPES
 from jointwear.model.laws import EVERY, NORMAL
 from jointwear.model.laws.record import ECCENTRICITY, HERTZ_PATCH, PENETRATION, SHAPES, resolve
@@ -40,7 +42,7 @@ DISPATCHED = [family for family in EVERY if family.dispatchers]
 
 def arguments(dispatcher) -> tuple[str, ...]:
     """The dispatcher's argument names after the code."""
-    return tuple(inspect.signature(dispatcher.py_func).parameters)[1:]
+    return dispatcher.arguments
 
 
 def through_dispatch(dispatcher, code: int) -> list:
@@ -77,6 +79,34 @@ def test_a_code_without_a_law_gives_the_error_value(family):
     for name in family.dispatchers:
         for code in codes:
             assert np.isnan(as_floats(through_dispatch(resolve(name), code))).all(), (name, code)
+
+
+def _compiled_call(stub):
+    """``stub(laws, 0, code, *arguments)`` compiled (a fresh harness per dispatcher)."""
+
+    @njit
+    def call(laws, code, arguments):
+        return stub(laws, 0, code, *arguments)
+
+    return call
+
+
+@pytest.mark.parametrize("entry", COMPILED, ids=lambda e: e[0].__name__)
+def test_the_compiled_dispatch_reaches_the_same_law_and_only_the_codes_used(entry):
+    """Compiled for all of a family's codes, each code gives what the table's law gives;
+    compiled for one code, every other code gives the error value (its branch is not there).
+    """
+    stub, dispatch, _ = entry
+    call = _compiled_call(stub)
+    codes = tuple(dispatch.laws)
+    no_user = kind_laws(np.zeros((1, 0), dtype=np.int64), {}, None)
+    for used in (codes, *((code,) for code in codes)):
+        laws = no_user._replace(used=LawSet({dispatch.family: used}))
+        for code, i in ((code, i) for code in codes for i in POINTS):
+            values = tuple(SAMPLES[n][i] for n in dispatch.arguments)
+            got = as_floats([call(laws, code, values)])
+            want = as_floats([dispatch(code if code in used else -1, *values)])
+            np.testing.assert_array_equal(got, want, err_msg=f"{stub.__name__} {code} {used}")
 
 
 @pytest.mark.parametrize("family", EVERY, ids=lambda f: f.key)

@@ -19,10 +19,11 @@ from jointwear.kernels.laws.friction import (
 )
 from jointwear.kernels.laws.normal import (
     Damping,
-    damped,
+    damped_by,
     flores2011,
     hertz,
     hunt_crossley,
+    hysteresis_factor,
     lankarani_nikravesh,
 )
 from jointwear.kernels.laws.wear import (
@@ -68,7 +69,8 @@ LAW_FUNCTIONS = {
 
 def normal_force(law, delta, delta_dot, delta_dot_minus, k, n, c_e):
     """Hertz's force with the damping law ``law``."""
-    return damped(hertz(delta, k, n), delta_dot, delta_dot_minus, law, c_e)
+    chi = hysteresis_factor(law, c_e)
+    return damped_by(hertz(delta, k, n), delta_dot, delta_dot_minus, chi)
 
 
 @pytest.mark.parametrize(("law", "delta_dot", "expected"), HAND_FORCES)

@@ -23,7 +23,8 @@ from typer.testing import CliRunner
 import jointwear as jw
 from jointwear.cli import app
 from jointwear.engine.user_laws import user_tables
-from jointwear.kernels.laws.user import USER_CODE, NoUserLaws, UserLaws
+from jointwear.kernels.laws.dispatch import USER_CODE
+from jointwear.kernels.laws.user import UserLaws
 from jointwear.model import ModelError
 from jointwear.model.laws import user as records
 
@@ -120,13 +121,13 @@ def test_each_family_alone_gives_the_built_in_results():
 
 
 def test_a_model_without_user_laws_keeps_the_built_in_tables():
-    """No row with a user law: every kind gets NoUserLaws, the built-in dispatch."""
+    """No row with a user law: every kind gets none, and compiles the built-in dispatch."""
     tables = user_tables(jw.load_model(FOURBAR))
-    assert all(isinstance(t, NoUserLaws) for t in tables.values())
+    assert all(t is None for t in tables.values())
     twin = parse(fourbar_text(USER_LAWS, TWIN_KEYS))
     tables = user_tables(twin)
     assert isinstance(tables["revolute"], UserLaws)
-    assert isinstance(tables["translational"], NoUserLaws)
+    assert tables["translational"] is None
     assert (tables["revolute"].address[0] != 0).sum() == 5  # force, chi, friction, sliding, wear
     np.testing.assert_array_equal(tables["revolute"].params[0, 2, :2], [1e-4, 1e-2])
 
@@ -345,9 +346,10 @@ def test_a_user_law_that_raises_stops_the_run_as_non_finite():
 
 
 def test_the_kernel_and_record_constants_agree():
+    from jointwear.kernels.laws import dispatch
     from jointwear.kernels.laws import user as kernel
 
-    assert records.USER_CODE == kernel.USER_CODE
+    assert records.USER_CODE == dispatch.USER_CODE
     assert records.N_KEYS == kernel.N_KEYS
     arities = {len(role.arguments) for roles in records.ROLES.values() for role in roles}
     assert max(arities) == kernel.ARGUMENTS

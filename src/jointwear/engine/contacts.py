@@ -14,16 +14,15 @@ from numpy.typing import NDArray
 
 from ..joints import KINDS
 from ..kernels.elements import ElementLog, Elements, ElementScratch, ElementState, no_elements
-from ..kernels.laws.user import UserLaws
 from ..kernels.structs import to_struct
 from ..mechanism.system import System
 from ..results.run_state import FIELDS, RunState
 
 
 def _nested(record: NamedTuple) -> NamedTuple:
-    """A table with its ``UserLaws`` as a struct too (``NoUserLaws`` holds no array)."""
-    user = getattr(record, "user", None)
-    return record._replace(user=to_struct(user)) if isinstance(user, UserLaws) else record
+    """A table with its law table (``kernels.laws.user.KindLaws``) as a struct too."""
+    laws = getattr(record, "laws", None)
+    return record if laws is None else record._replace(laws=to_struct(laws))
 
 
 class KindArrays(NamedTuple):

@@ -4,8 +4,8 @@
 wrapper of the kernels' one signature (``kernels.laws.user``) and adds the law's record
 (``model.laws.user``): model files then name it like a built-in law. ``user_tables`` gives
 each joint type's ``UserLaws`` for a run: per row, the wrappers' addresses and the law's own
-parameters; a type none of whose rows chooses a user law gets ``NoUserLaws``, and its
-compiled code is that of the built-in laws alone.
+parameters; a type none of whose rows chooses a user law gets None, and its compiled code
+is that of the built-in laws alone.
 
 The wrappers live as long as the process (an address must outlive every run that holds it).
 A law travels to other processes with the sweep's cases (``UserLaw`` pickles with its
@@ -216,21 +216,21 @@ def install(laws: Iterable[records.UserLaw]) -> None:
             records.register(law)
 
 
-def user_tables(model: object) -> dict[str, kernel.UserLaws | kernel.NoUserLaws]:
+def user_tables(model: object) -> dict[str, kernel.UserLaws | None]:
     """Per joint type with clearance, its rows' user laws (``kernels.laws.user``)."""
     from ..joints import KINDS
 
     return {kind.name: _table([j.clearance for j in kind.joints(model)]) for kind in KINDS}
 
 
-def _table(clearances: list) -> kernel.UserLaws | kernel.NoUserLaws:
+def _table(clearances: list) -> kernel.UserLaws | None:
     rows = len(clearances)
     chosen = [
         [(family, records.registered(getattr(c, family))) for family in records.FAMILIES]
         for c in clearances
     ]
     if not any(law is not None for row in chosen for _, law in row):
-        return kernel.NoUserLaws(rows=rows)
+        return None
     address = np.zeros((rows, kernel.N_ADDRESSES), dtype=np.int64)
     params = np.zeros((rows, kernel.N_FAMILIES, kernel.N_KEYS))
     for i, (clearance, row) in enumerate(zip(clearances, chosen, strict=True)):

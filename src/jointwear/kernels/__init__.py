@@ -1,11 +1,15 @@
 """Compiled kernels: plain SI numbers and arrays, no names, units or I/O.
 
-Everything here is ``@njit(cache=True)`` and imports only ``math``, ``numpy``, ``numba``
-and sibling kernel modules (``cache`` also ``hashlib``, ``os``, ``pickle``, ``contextlib`` and
-``sys``, to stamp the cache; this file ``os`` and ``sys``, for the switch and the finder below).
+Everything here is ``@njit(cache=True, no_cfunc_wrapper=True)`` (no kernel is called as a C
+function, and that wrapper was a tenth of the compile time) and imports only ``math``,
+``numpy``, ``numba`` and sibling kernel modules (``cache`` also ``hashlib``, ``os``,
+``pickle``, ``contextlib`` and ``sys``, to stamp the cache; this file ``os`` and ``sys``, for
+the switch and the finder below; ``laws.dispatch`` and ``laws.lawset`` ``collections.abc``,
+for type hints).
 
-- ``laws/``: normal-force, damping, friction, wear and film laws, dispatched by code (their
-  records, names and keys are in ``model.laws``);
+- ``laws/``: normal-force, damping, friction, wear and film laws, dispatched by code and
+  compiled for the codes a model uses (``laws.dispatch``; their records, names and keys are
+  in ``model.laws``);
 - ``elements/``: contact elements (``journal``: the revolute clearance joint);
 - ``integrate/``: integrators behind one interface (Runge-Kutta tableaus, Adams);
 - ``kinematics``, ``functions``, ``constraints``, ``forces``, ``linalg``, ``dynamics``: the

@@ -26,7 +26,7 @@ from . import PLAIN_NUMBA
 if PLAIN_NUMBA:
     StructProxy = tuple  # what to_struct returns: the named tuple
 
-    @njit(cache=True)
+    @njit(cache=True, no_cfunc_wrapper=True)
     def to_struct(record):
         """The named tuple ``record`` itself (``JOINTWEAR_PLAIN_NUMBA``)."""
         return record
@@ -34,7 +34,9 @@ if PLAIN_NUMBA:
 else:
     from .struct_ref import StructProxy, to_struct
 
-__all__ = ["StructProxy", "by_kind", "kind_of", "to_struct"]
+__all__ = ["JIT_OPTIONS", "StructProxy", "by_kind", "field_type", "kind_of", "to_struct"]
+
+JIT_OPTIONS = {"no_cpython_wrapper": True, "no_cfunc_wrapper": True}  # of what stubs compile to
 
 
 def kind_of(record_type: types.Type) -> str:
@@ -44,16 +46,24 @@ def kind_of(record_type: types.Type) -> str:
     return record_type.kind
 
 
+def field_type(record_type: types.Type, name: str) -> types.Type:
+    """The type of field ``name`` of a struct or named tuple type."""
+    if isinstance(record_type, types.BaseNamedTuple):
+        return record_type.types[record_type.fields.index(name)]
+    return record_type.field_dict[name]
+
+
 def by_kind(stub: object, implementations: dict) -> object:
     """Make ``stub`` dispatch, when compiled, to implementations[kind of its first argument].
 
     The choice is made by type at compile time: a run compiles only the implementation its
-    tables call for, and the compiled code does not branch on it.
+    tables call for, and the compiled code does not branch on it. The implementation is
+    compiled in the stub's place (its Python function, which takes the stub's arguments),
+    with no call in between.
     """
 
-    @overload(stub)
+    @overload(stub, strict=False, jit_options=JIT_OPTIONS)
     def _dispatch(first, *args):
-        function = implementations[kind_of(first)]
-        return lambda first, *args: function(first, *args)
+        return implementations[kind_of(first)].py_func
 
     return stub

@@ -73,37 +73,37 @@ def no_elements() -> NoElements:
     return NoElements(ints=np.zeros((0, 1), dtype=np.int64), contact_on=np.zeros(0, np.int64))
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _no_forces(table, state, scratch, q, qd, g):
     return None
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _no_excess(table, state, scratch, k, q, qd):
     return 0.0
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _no_tolerance(table, k):
     return 0.0
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _no_period(table, state, scratch, log, k, q, qd, info):
     return False
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _no_accumulation(table, state, scratch, log, t_old, t_new, q_mid, qd_mid, snap_times, first):
     return None
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _no_outputs(table, scratch, row, c):
     return c
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _no_energy(table, scratch):
     return 0.0
 
@@ -155,7 +155,7 @@ for _stub, _absent in (
     by_kind(_stub, _each_kind(_stub.__name__.removeprefix("_kind_"), _absent))
 
 
-@njit(cache=True, no_cpython_wrapper=True, inline="always")
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True, inline="always")
 def slot_count(el):
     """Number of contact slots of all elements."""
     return (
@@ -165,7 +165,7 @@ def slot_count(el):
     )
 
 
-@njit(cache=True, no_cpython_wrapper=True, inline="always")
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True, inline="always")
 def _locate(el, slot):
     """(kind, slot among that kind's) of a slot: kinds in field order, SLOTS per element."""
     first = journal.SLOTS * el.journal.ints.shape[0]
@@ -177,7 +177,7 @@ def _locate(el, slot):
     return 2, slot - second
 
 
-@njit(cache=True, no_cpython_wrapper=True, inline="always")
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True, inline="always")
 def owner(el, slot):
     """(kind, element within its kind) of a slot: where the loop logs an onset."""
     kind, local = _locate(el, slot)
@@ -188,7 +188,7 @@ def owner(el, slot):
     return kind, local // pin_slot.SLOTS
 
 
-@njit(cache=True, no_cpython_wrapper=True, inline="always")
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True, inline="always")
 def add_forces(el, st, sc, q, qd, g):
     """Evaluate every element at (q, q') and add its contact forces to g [N, N, N m]."""
     _kind_add_forces(el.journal, st.journal, sc.journal, q, qd, g)
@@ -196,7 +196,7 @@ def add_forces(el, st, sc, q, qd, g):
     _kind_add_forces(el.pin_slot, st.pin_slot, sc.pin_slot, q, qd, g)
 
 
-@njit(cache=True, no_cpython_wrapper=True, inline="always")
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True, inline="always")
 def penetration_excess(el, st, sc, slot, q, qd):
     """Penetration of a contact slot beyond its contact tolerance at (q, q') [m]."""
     kind, local = _locate(el, slot)
@@ -207,7 +207,7 @@ def penetration_excess(el, st, sc, slot, q, qd):
     return _kind_penetration_excess(el.pin_slot, st.pin_slot, sc.pin_slot, local, q, qd)
 
 
-@njit(cache=True, no_cpython_wrapper=True, inline="always")
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True, inline="always")
 def tolerance(el, slot):
     """Contact tolerance of a slot [m]."""
     kind, local = _locate(el, slot)
@@ -218,7 +218,7 @@ def tolerance(el, slot):
     return _kind_tolerance(el.pin_slot, local)
 
 
-@njit(cache=True, no_cpython_wrapper=True, inline="always")
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True, inline="always")
 def in_contact(el, st, slot):
     """Whether a slot's contact period is under way."""
     kind, local = _locate(el, slot)
@@ -229,7 +229,7 @@ def in_contact(el, st, slot):
     return st.pin_slot.contact_on[local] == 1
 
 
-@njit(cache=True, no_cpython_wrapper=True, inline="always")
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True, inline="always")
 def begin_period(el, st, sc, log, slot, q, qd, info):
     """Open or close a slot's contact period at a step end; True when one opens (info filled)."""
     kind, local = _locate(el, slot)
@@ -244,7 +244,7 @@ def begin_period(el, st, sc, log, slot, q, qd, info):
     )
 
 
-@njit(cache=True, no_cpython_wrapper=True, inline="always")
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True, inline="always")
 def accumulate(el, st, sc, log, t_old, t_new, q_mid, qd_mid, snap_times, first):
     """Wear, totals and snapshots of the accepted step [t_old, t_new] [s], from its midpoint."""
     _kind_accumulate(
@@ -261,7 +261,7 @@ def accumulate(el, st, sc, log, t_old, t_new, q_mid, qd_mid, snap_times, first):
     )  # fmt: skip
 
 
-@njit(cache=True, no_cpython_wrapper=True, inline="always")
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True, inline="always")
 def write_outputs(el, sc, row, c):
     """Every element's time-series columns from its last evaluation; the next free column."""
     c = _kind_write_outputs(el.journal, sc.journal, row, c)
@@ -269,7 +269,7 @@ def write_outputs(el, sc, row, c):
     return _kind_write_outputs(el.pin_slot, sc.pin_slot, row, c)
 
 
-@njit(cache=True, no_cpython_wrapper=True, inline="always")
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True, inline="always")
 def elastic_energy(el, sc):
     """Elastic energy stored in the contacts of the last evaluation [J]."""
     return (

@@ -30,19 +30,18 @@ from numba import njit
 
 from ..kinematics import angular_velocity
 from ..laws.asperity import asperity_energy, asperity_load, film_eccentricity
+from ..laws.dispatch import if_used
 from ..laws.foundation import foundation_load, foundation_points, spread_foundation_wear
-from ..laws.lubrication import (
-    couette_torque,
-    film_force_components,
-    film_power_loss,
-    film_torques,
-)
+from ..laws.lubrication import couette_torque, film_power_loss, film_torques
+from ..laws.lubrication import film_force_components as films
 from ..laws.normal import ElasticLaw
 from ..laws.user import (
-    NoUserLaws,
+    KindLaws,
     UserLaws,
     damped,
     elastic_force,
+    film_force_components,
+    kind_laws,
     slip_speed,
     tangential_force,
     wear_coefficient,
@@ -76,6 +75,12 @@ N_INTS = 10
 SPREAD_HERTZ = 0
 SPREAD_PEAK = 1
 SPREAD_FOUNDATION = 2
+
+# The family of each law-code column (``model.laws`` keys): what the loop is compiled for.
+LAW_COLUMNS = {
+    "normal_law": I_NORMAL, "damping": I_DAMPING, "friction_law": I_FRICTION,
+    "wear_law": I_WEAR, "wear_distribution": I_SPREAD, "lubrication": I_LUBRICATION,
+}  # fmt: skip
 
 # Columns of JournalTable.params (SI).
 P_SB_X = 0  # bearing centre in the bearing body's frame [m]
@@ -199,7 +204,7 @@ class JournalTable(NamedTuple):
     ints: np.ndarray  # (nc, N_INTS) int64
     params: np.ndarray  # (nc, N_PARAMS)
     lookups: np.ndarray  # (nc, size): each row's finite-bearing impedance table (film.impedance)
-    user: UserLaws | NoUserLaws  # the rows' laws registered from Python
+    laws: KindLaws  # the rows' laws: the codes compiled, and those registered from Python
 
 
 class JournalState(NamedTuple):
@@ -227,7 +232,7 @@ def make_tables(
     ints: np.ndarray,
     params: np.ndarray,
     snapshots: int,
-    user: UserLaws | NoUserLaws | None = None,
+    user: UserLaws | None = None,
     lookups: np.ndarray | None = None,
 ) -> tuple[JournalTable, JournalState, JournalLog, JournalScratch]:
     """Allocate a run's arrays for the joints of ``ints`` and ``params``, unworn (Python).
@@ -235,7 +240,6 @@ def make_tables(
     ``user``: the rows' user laws (``laws.user``); None: no row has one. ``lookups``: each
     row's impedance table, flat (``film.impedance``); None: no row has a finite bearing.
     """
-    user = NoUserLaws(rows=ints.shape[0]) if user is None else user
     nc = ints.shape[0]
     lookups = np.zeros((nc, 0)) if lookups is None else lookups
     sectors = int(ints[:, I_SECTORS].max(initial=1))
@@ -244,7 +248,7 @@ def make_tables(
             ints=ints.astype(np.int64),
             params=params.astype(np.float64),
             lookups=np.ascontiguousarray(lookups, dtype=np.float64),
-            user=user,
+            laws=kind_laws(ints, LAW_COLUMNS, user),
         ),
         JournalState(
             contact_on=np.zeros(nc, dtype=np.int64),
@@ -258,14 +262,14 @@ def make_tables(
     )
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _profiles(law, state, k):
     """Joint k's worn profiles (bearing, journal) [m]; empty without wear feedback."""
     sectors = law[I_SECTORS] if law[I_FEEDBACK] else 0
     return state.wear[k, 0, :sectors], state.wear[k, 1, :sectors]
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _depth(theta, depths):
     """Wear depth of a profile in direction theta [rad]; 0 for an empty profile [m]."""
     if depths.shape[0] == 0:
@@ -273,7 +277,7 @@ def _depth(theta, depths):
     return depth_at(theta, depths)
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def evaluate(table, state, scratch, k, q, qd):
     """Geometry and forces of joint k at state (q, q'), into scratch.contact[k]."""
     law = table.ints[k]
@@ -295,11 +299,7 @@ def evaluate(table, state, scratch, k, q, qd):
     elastic = 0.0
     foundation = law[I_NORMAL] == ElasticLaw.ELASTIC_FOUNDATION
     if foundation and e > p[P_C]:  # the worn surfaces touch where they interfere most
-        elastic, _, peak = foundation_load(
-            e, p[P_C], theta_b, wear_b, theta_j, wear_j, p[P_RB], p[P_WIDTH],
-            p[P_K] / p[P_RB], foundation_points(0.5 * math.pi, law[I_SECTORS]),
-        )  # fmt: skip
-        delta = max(delta, peak)
+        elastic, delta = _on_foundation(table, k, e, delta, theta_b, wear_b, theta_j, wear_j)
     delta_dot, v_t = contact_velocities(qd, ib, ij, nx, ny, dex, dey, p[P_RB], p[P_RJ])
     out[C_DELTA] = delta
     out[C_DDOT] = delta_dot
@@ -312,7 +312,7 @@ def evaluate(table, state, scratch, k, q, qd):
         out[C_SQUEEZE_X] = dex + 0.5 * (w_j + w_b) * ey
         out[C_SQUEEZE_Y] = dey - 0.5 * (w_j + w_b) * ex
         speeds = (delta_dot, gamma_dot, w_j + w_b, w_j - w_b)
-        _film(table, k, out, e, gap, delta, nx, ny, *speeds)
+        _film_if_used(table, k, out, e, gap, delta, nx, ny, *speeds)
     asperity = out[C_ASPERITY]  # > 0 only in a mixed film: the asperities touch
     if delta <= 0.0 and asperity == 0.0:
         return
@@ -323,12 +323,12 @@ def evaluate(table, state, scratch, k, q, qd):
             impact_speed = state.impact_speed[k]
         if not foundation:
             elastic = elastic_force(
-                table.user, k, law[I_NORMAL], delta, p[P_K], p[P_EXP], p[P_ESTAR], p[P_C],
+                table.laws, k, law[I_NORMAL], delta, p[P_K], p[P_EXP], p[P_ESTAR], p[P_C],
                 p[P_WIDTH],
             )  # fmt: skip
-        f_n += damped(table.user, k, elastic, delta_dot, impact_speed, law[I_DAMPING], p[P_CE])
+        f_n += damped(table.laws, k, elastic, delta_dot, impact_speed, law[I_DAMPING], p[P_CE])
     f_t = tangential_force(
-        table.user, k, law[I_FRICTION], v_t, f_n, p[P_CF], p[P_F0], p[P_F1], p[P_F2]
+        table.laws, k, law[I_FRICTION], v_t, f_n, p[P_CF], p[P_F0], p[P_F1], p[P_F2]
     )
     out[C_FN] = f_n
     out[C_FT] = f_t
@@ -337,7 +337,35 @@ def evaluate(table, state, scratch, k, q, qd):
     out[C_FY] = -f_n * ny + f_t * nx
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+def _foundation(table, k, e, delta, theta_b, wear_b, theta_j, wear_j):
+    """(elastic force [N], penetration [m]) of joint k on its elastic foundation, worn.
+
+    The worn surfaces touch where they interfere most: the penetration is the larger of the
+    nominal one ``delta`` and that peak.
+    """
+    p = table.params[k]
+    elastic, _, peak = foundation_load(
+        e, p[P_C], theta_b, wear_b, theta_j, wear_j, p[P_RB], p[P_WIDTH],
+        p[P_K] / p[P_RB], foundation_points(0.5 * math.pi, table.ints[k, I_SECTORS]),
+    )  # fmt: skip
+    return elastic, max(delta, peak)
+
+
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+def _no_foundation(table, k, e, delta, theta_b, wear_b, theta_j, wear_j):
+    return 0.0, delta
+
+
+def _on_foundation(table, k, e, delta, theta_b, wear_b, theta_j, wear_j):
+    """``_foundation`` where a row's normal law is the elastic foundation (compiled only then)."""
+
+
+if_used(_on_foundation, "normal_law", (ElasticLaw.ELASTIC_FOUNDATION,), _foundation,
+        _no_foundation)  # fmt: skip
+
+
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _line_of_centres(ex, ey, dex, dey):
     """Unit vector from the bearing's centre to the journal's [-].
 
@@ -352,7 +380,7 @@ def _line_of_centres(ex, ey, dex, dey):
     return 1.0, 0.0
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _film(table, k, out, e, gap, delta, nx, ny, delta_dot, gamma_dot, w, w_rel):
     """Film force, shear torques and power of a lubricated joint k into out (C_EPS, C_FILM_*).
 
@@ -394,7 +422,8 @@ def _film(table, k, out, e, gap, delta, nx, ny, delta_dot, gamma_dot, w, w_rel):
         eps = min(e / gap, breakdown)
     args = (eps, delta_dot / gap, gamma_dot, w)
     fluid = (p[P_VISCOSITY], p[P_RJ], p[P_WIDTH], gap)
-    f_r, f_t = film_force_components(law[I_LUBRICATION], table.lookups[k], *args, *fluid)
+    code = law[I_LUBRICATION]
+    f_r, f_t = film_force_components(table.laws, k, code, table.lookups[k], *args, *fluid)
     out[C_FILM_X] = weight * (f_r * nx - f_t * ny)
     out[C_FILM_Y] = weight * (f_r * ny + f_t * nx)
     couette = couette_torque(eps, w_rel, *fluid)
@@ -405,7 +434,20 @@ def _film(table, k, out, e, gap, delta, nx, ny, delta_dot, gamma_dot, w, w_rel):
     out[C_FILM_TB] = weight * t_bearing
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+def _no_film(table, k, out, e, gap, delta, nx, ny, delta_dot, gamma_dot, w, w_rel):
+    return None
+
+
+def _film_if_used(table, k, out, e, gap, delta, nx, ny, delta_dot, gamma_dot, w, w_rel):
+    """``_film`` where a row is lubricated (compiled only then)."""
+
+
+LUBRICATED = tuple(films.laws)  # the codes of the laws with a film
+if_used(_film_if_used, "lubrication", LUBRICATED, _film, _no_film)
+
+
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def add_forces(table, state, scratch, q, qd, g):
     """Evaluate every joint and add its contact and film forces to g [N, N, N m]."""
     for k in range(table.ints.shape[0]):
@@ -430,26 +472,26 @@ def add_forces(table, state, scratch, q, qd, g):
         )  # fmt: skip
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def penetration_excess(table, state, scratch, k, q, qd):
     """Penetration of joint k beyond its contact tolerance at (q, q') [m]."""
     evaluate(table, state, scratch, k, q, qd)
     return scratch.contact[k, C_DELTA] - table.params[k, P_TOL]
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def tolerance(table, k):
     """Contact tolerance of joint k [m]: a period begins past it."""
     return table.params[k, P_TOL]
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _track_peaks(totals, c):
     totals[T_MAX_FN] = max(totals[T_MAX_FN], c[C_FN])
     totals[T_MAX_DELTA] = max(totals[T_MAX_DELTA], c[C_DELTA])
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def begin_period(table, state, scratch, log, k, q, qd, info):
     """Open or close joint k's contact period at a step end; True when one opens.
 
@@ -475,7 +517,38 @@ def begin_period(table, state, scratch, log, k, q, qd, info):
     return True
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+def _spread_on_foundation(table, state, scratch, k, volume):
+    """Spread the worn volume [m^3] of joint k by its foundation's pressure; the volume."""
+    c = scratch.contact[k]
+    p = table.params[k]
+    law = table.ints[k]
+    e = math.hypot(c[C_EX], c[C_EY])
+    wear_b, wear_j = _profiles(law, state, k)
+    points = foundation_points(0.5 * math.pi, law[I_SECTORS])
+    args = (e, p[P_C], c[C_THETA_B], wear_b, c[C_THETA_J], wear_j, points)
+    share = p[P_SHARE]
+    bearing = state.wear[k, 0, : law[I_SECTORS]]
+    journal = state.wear[k, 1, : law[I_SECTORS]]
+    return spread_foundation_wear(
+        bearing, c[C_THETA_B], p[P_RB], p[P_WIDTH], (1.0 - share) * volume, *args
+    ) + spread_foundation_wear(journal, c[C_THETA_J], p[P_RJ], p[P_WIDTH], share * volume, *args)
+
+
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+def _no_spread(table, state, scratch, k, volume):
+    return 0.0
+
+
+def _spread_if_used(table, state, scratch, k, volume):
+    """``_spread_on_foundation`` where a row spreads wear so (compiled only then)."""
+
+
+if_used(_spread_if_used, "wear_distribution", (SPREAD_FOUNDATION,), _spread_on_foundation,
+        _no_spread)  # fmt: skip
+
+
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _wear_surfaces(table, state, scratch, k, ds):
     """Add the wear of sliding distance ds [m] under the last evaluation of joint k.
 
@@ -485,22 +558,13 @@ def _wear_surfaces(table, state, scratch, k, ds):
     p = table.params[k]
     law = table.ints[k]
     f_n = c[C_FN]
-    coef = wear_coefficient(table.user, k, law[I_WEAR], abs(c[C_FT]) / f_n, p[P_WEAR])
+    coef = wear_coefficient(table.laws, k, law[I_WEAR], abs(c[C_FT]) / f_n, p[P_WEAR])
     sectors = law[I_SECTORS]
     share = p[P_SHARE]
     bearing = state.wear[k, 0, :sectors]
     journal = state.wear[k, 1, :sectors]
     if law[I_SPREAD] == SPREAD_FOUNDATION:
-        e = math.hypot(c[C_EX], c[C_EY])
-        wear_b, wear_j = _profiles(law, state, k)
-        points = foundation_points(0.5 * math.pi, sectors)
-        volume = coef * f_n * ds
-        args = (e, p[P_C], c[C_THETA_B], wear_b, c[C_THETA_J], wear_j, points)
-        return spread_foundation_wear(
-            bearing, c[C_THETA_B], p[P_RB], p[P_WIDTH], (1.0 - share) * volume, *args
-        ) + spread_foundation_wear(
-            journal, c[C_THETA_J], p[P_RJ], p[P_WIDTH], share * volume, *args
-        )
+        return _spread_if_used(table, state, scratch, k, coef * f_n * ds)
     b, _ = hertz_line_contact(f_n, p[P_RSTAR], p[P_ESTAR], p[P_WIDTH])
     peak = law[I_SPREAD] == SPREAD_PEAK
     volume = accumulate_wear(
@@ -511,7 +575,7 @@ def _wear_surfaces(table, state, scratch, k, ds):
     )
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _track_ranges(law, p, c, totals, h):
     """Time and extent of the step [s] beyond the laws' ranges, into totals (T_*_TIME, _MAX).
 
@@ -528,7 +592,7 @@ def _track_ranges(law, p, c, totals, h):
         _beyond(totals, T_FILM_TIME, T_FILM_MAX, c[C_EPS], p[P_BREAKDOWN], h)
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _track_film(table, k, c, totals, qd, h):
     """The film's energy and the integrals its summary needs, over a step of h [s]."""
     totals[T_FILM_ENERGY] += c[C_FILM_POWER] * h
@@ -545,14 +609,26 @@ def _track_film(table, k, c, totals, qd, h):
     totals[T_FILM_CLOSURE] = max(totals[T_FILM_CLOSURE], table.params[k, P_C] + c[C_DELTA])
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+def _no_track_film(table, k, c, totals, qd, h):
+    return None
+
+
+def _track_film_if_used(table, k, c, totals, qd, h):
+    """``_track_film`` where a row is lubricated (compiled only then)."""
+
+
+if_used(_track_film_if_used, "lubrication", LUBRICATED, _track_film, _no_track_film)
+
+
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _beyond(totals, time_slot, max_slot, value, limit, h):
     totals[max_slot] = max(totals[max_slot], value)
     if value > limit:
         totals[time_slot] += h
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def accumulate(table, state, scratch, log, t_old, t_new, q_mid, qd_mid, snap_times, first):
     """Wear and totals of the step [t_old, t_new] [s] from its midpoint state.
 
@@ -574,12 +650,12 @@ def accumulate(table, state, scratch, log, t_old, t_new, q_mid, qd_mid, snap_tim
             totals[T_FRICTION_ENERGY] -= c[C_FT] * c[C_VT] * h
             p = table.params[k]
             sliding_speed = slip_speed(
-                table.user, k, table.ints[k, I_FRICTION], c[C_VT], p[P_F0], p[P_F1], p[P_F2]
+                table.laws, k, table.ints[k, I_FRICTION], c[C_VT], p[P_F0], p[P_F1], p[P_F2]
             )
             totals[T_SLIDING] += sliding_speed * h
         totals[T_SOLID_IMPULSE] += c[C_FN] * h
         if table.ints[k, I_LUBRICATION]:
-            _track_film(table, k, c, totals, qd_mid, h)
+            _track_film_if_used(table, k, c, totals, qd_mid, h)
         _track_ranges(table.ints[k], table.params[k], c, totals, h)
         t_from = t_old
         s = first
@@ -598,7 +674,7 @@ def accumulate(table, state, scratch, log, t_old, t_new, q_mid, qd_mid, snap_tim
             totals[T_WORN_VOLUME] += _wear_surfaces(table, state, scratch, k, ds)
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def write_outputs(table, scratch, row, c):
     """Write each joint's ``OUTPUTS`` from its last evaluation into row from column c.
 
@@ -615,7 +691,7 @@ def write_outputs(table, scratch, row, c):
     return c
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def elastic_energy(table, scratch):
     """Elastic energy stored in the last evaluated contacts [J]."""
     energy = 0.0
@@ -623,11 +699,32 @@ def elastic_energy(table, scratch):
         p = table.params[k]
         delta = scratch.contact[k, C_DELTA]
         energy += law_energy(
-            table.user, k, table.ints[k, I_NORMAL], delta, p[P_K], p[P_EXP], p[P_ESTAR],
+            table.laws, k, table.ints[k, I_NORMAL], delta, p[P_K], p[P_EXP], p[P_ESTAR],
             p[P_C], p[P_WIDTH],
         )  # fmt: skip
-        if p[P_ROUGHNESS] > 0.0:  # the asperities' load is held at W(0) through any overlap
-            rough = (p[P_ROUGHNESS], p[P_ASPERITY], p[P_RSTAR], p[P_WIDTH])
-            energy += asperity_energy(max(-delta, 0.0), *rough)
-            energy += asperity_load(0.0, *rough) * max(delta, 0.0)
+        if p[P_ROUGHNESS] > 0.0:
+            energy += _asperities_if_used(table, k, delta)
     return energy
+
+
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+def _asperities(table, k, delta):
+    """Energy [J] of joint k's asperities at penetration delta [m].
+
+    Their load is held at W(0) through any overlap of the mean planes.
+    """
+    p = table.params[k]
+    rough = (p[P_ROUGHNESS], p[P_ASPERITY], p[P_RSTAR], p[P_WIDTH])
+    return asperity_energy(max(-delta, 0.0), *rough) + asperity_load(0.0, *rough) * max(delta, 0.0)
+
+
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+def _no_asperities(table, k, delta):
+    return 0.0
+
+
+def _asperities_if_used(table, k, delta):
+    """``_asperities`` where a row is lubricated (compiled only then)."""
+
+
+if_used(_asperities_if_used, "lubrication", LUBRICATED, _asperities, _no_asperities)

@@ -24,7 +24,7 @@ from ..kinematics import angle, angular_velocity, point_position, point_velocity
 from .point_loads import apply_force_at
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def eccentricity(q, qd, ib, sb_x, sb_y, ij, sj_x, sj_y):
     """Journal-centre offset from the bearing centre and its rate.
 
@@ -38,7 +38,7 @@ def eccentricity(q, qd, ib, sb_x, sb_y, ij, sj_x, sj_y):
     return jx - bx, jy - by, vjx - vbx, vjy - vby
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def surface_angles(q, ib, ij, nx, ny):
     """Direction of n in the bearing's and the journal's body frames, in [0, 2 pi) [rad]."""
     direction = math.atan2(ny, nx)
@@ -46,7 +46,7 @@ def surface_angles(q, ib, ij, nx, ny):
     return (direction - angle(q, ib)) % two_pi, (direction - angle(q, ij)) % two_pi
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def contact_velocities(qd, ib, ij, nx, ny, dex, dey, r_b, r_j):
     """Penetration rate along n, and sliding speed v_t of P_J relative to P_B along t [m/s].
 
@@ -59,7 +59,7 @@ def contact_velocities(qd, ib, ij, nx, ny, dex, dey, r_b, r_j):
     return delta_dot, tx * dex + ty * dey + spin
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def apply_contact(q, g, ib, sb_x, sb_y, ij, sj_x, sj_y, nx, ny, r_b, r_j, f_n, f_t):
     """Add the contact force pair to the generalised forces g [N, N, N m].
 
@@ -72,7 +72,7 @@ def apply_contact(q, g, ib, sb_x, sb_y, ij, sj_x, sj_y, nx, ny, r_b, r_j, f_n, f
     apply_force_at(q, g, ib, sb_x, sb_y, r_b * nx, r_b * ny, -fx, -fy)
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def apply_at_centres(q, g, ib, sb_x, sb_y, ij, sj_x, sj_y, fx, fy):
     """Add (fx, fy) [N] on the journal and minus it on the bearing, through their centres.
 

@@ -78,10 +78,11 @@ from numba import njit
 from ..kinematics import point_position, rotate
 from ..laws.segments import add_wear, depth_along
 from ..laws.user import (
-    NoUserLaws,
+    KindLaws,
     UserLaws,
     damped,
     elastic_force,
+    kind_laws,
     slip_speed,
     tangential_force,
     wear_coefficient,
@@ -102,6 +103,10 @@ I_SEGMENTS = 7  # segments of each side
 I_END_SECTORS = 8  # sectors of each end's half circle
 I_PIN_SECTORS = 9  # sectors of the pin
 N_INTS = 10
+
+# The family of each law-code column (``model.laws`` keys): what the loop is compiled for.
+LAW_COLUMNS = {"normal_law": I_NORMAL, "damping": I_DAMPING, "friction_law": I_FRICTION,
+               "wear_law": I_WEAR}  # fmt: skip
 
 # Columns of PinSlotTable.params (SI).
 P_C_X = 0  # point C on the slot's centre line, slot body's frame [m]
@@ -194,7 +199,7 @@ class PinSlotTable(NamedTuple):
 
     ints: np.ndarray  # (np, N_INTS) int64
     params: np.ndarray  # (np, N_PARAMS)
-    user: UserLaws | NoUserLaws  # the rows' laws registered from Python
+    laws: KindLaws  # the rows' laws: the codes compiled, and those registered from Python
 
 
 class PinSlotState(NamedTuple):
@@ -222,20 +227,23 @@ def make_tables(
     ints: np.ndarray,
     params: np.ndarray,
     snapshots: int,
-    user: UserLaws | NoUserLaws | None = None,
+    user: UserLaws | None = None,
 ) -> tuple[PinSlotTable, PinSlotState, PinSlotLog, PinSlotScratch]:
     """Allocate a run's arrays for the joints of ``ints`` and ``params``, unworn (Python).
 
     ``user``: the rows' user laws (``laws.user``); None: no row has one.
     """
-    user = NoUserLaws(rows=ints.shape[0]) if user is None else user
     n = ints.shape[0]
     ints = ints.astype(np.int64).reshape(n, N_INTS)
     counts = ints[:, [I_SEGMENTS, I_END_SECTORS, I_PIN_SECTORS]]
     cells = int(counts.max(initial=1))
     surfaces = len(SURFACES)
     return (
-        PinSlotTable(ints=ints, params=params.astype(np.float64).reshape(n, N_PARAMS), user=user),
+        PinSlotTable(
+            ints=ints,
+            params=params.astype(np.float64).reshape(n, N_PARAMS),
+            laws=kind_laws(ints, LAW_COLUMNS, user),
+        ),
         PinSlotState(
             contact_on=np.zeros(n, dtype=np.int64),
             impact_speed=np.zeros(n),
@@ -248,7 +256,7 @@ def make_tables(
     )
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _cells(law, surface):
     """Number of wear cells of a surface."""
     if surface <= SIDE_MINUS_V:
@@ -258,7 +266,7 @@ def _cells(law, surface):
     return law[I_END_SECTORS]
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _length(p, surface):
     """Length of a surface along its cells [m]."""
     if surface <= SIDE_MINUS_V:
@@ -268,7 +276,7 @@ def _length(p, surface):
     return math.pi * p[P_RS]
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _position(p, surface, where):
     """Position along a surface's cells from its middle [m] of x, phi or theta (``where``)."""
     if surface <= SIDE_MINUS_V:
@@ -278,7 +286,7 @@ def _position(p, surface, where):
     return p[P_RS] * where
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _depth(state, law, p, k, surface, where):
     """Wear depth of a surface at x, phi or theta (``where``) [m]; 0 without feedback."""
     if not law[I_FEEDBACK]:
@@ -289,7 +297,7 @@ def _depth(state, law, p, k, surface, where):
     return depth_along(_position(p, surface, where), cells, _length(p, surface))
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def evaluate(table, state, scratch, k, q, qd):
     """Geometry and forces of joint k at state (q, q'), into scratch.contact[k]."""
     law = table.ints[k]
@@ -330,18 +338,18 @@ def evaluate(table, state, scratch, k, q, qd):
     if state.contact_on[k]:
         impact_speed = state.impact_speed[k]
     elastic = elastic_force(
-        table.user, k, law[I_NORMAL], delta, p[P_K], p[P_EXP], p[P_ESTAR], p[P_C], p[P_WIDTH]
+        table.laws, k, law[I_NORMAL], delta, p[P_K], p[P_EXP], p[P_ESTAR], p[P_C], p[P_WIDTH]
     )
-    f_n = damped(table.user, k, elastic, delta_dot, impact_speed, law[I_DAMPING], p[P_CE])
+    f_n = damped(table.laws, k, elastic, delta_dot, impact_speed, law[I_DAMPING], p[P_CE])
     f_t = tangential_force(
-        table.user, k, law[I_FRICTION], v_t, f_n, p[P_CF], p[P_F0], p[P_F1], p[P_F2]
+        table.laws, k, law[I_FRICTION], v_t, f_n, p[P_CF], p[P_F0], p[P_F1], p[P_F2]
     )
     out[C_FN], out[C_FT], out[C_ELASTIC] = f_n, f_t, elastic
     out[C_FX] = -f_n * nx - f_t * ny
     out[C_FY] = -f_n * ny + f_t * nx
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def add_forces(table, state, scratch, q, qd, g):
     """Evaluate every joint and add its contact forces on pin and slot to g [N, N, N m]."""
     for k in range(table.ints.shape[0]):
@@ -358,26 +366,26 @@ def add_forces(table, state, scratch, q, qd, g):
         )  # fmt: skip
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def penetration_excess(table, state, scratch, k, q, qd):
     """Penetration of joint k (its one slot) beyond its contact tolerance at (q, q') [m]."""
     evaluate(table, state, scratch, k, q, qd)
     return scratch.contact[k, C_DELTA] - table.params[k, P_TOL]
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def tolerance(table, k):
     """Contact tolerance of joint k [m]: a period begins past it."""
     return table.params[k, P_TOL]
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _track_peaks(totals, c):
     totals[T_MAX_FN] = max(totals[T_MAX_FN], c[C_FN])
     totals[T_MAX_DELTA] = max(totals[T_MAX_DELTA], c[C_DELTA])
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def begin_period(table, state, scratch, log, k, q, qd, info):
     """Open or close joint k's contact period at a step end; True when one opens.
 
@@ -403,13 +411,13 @@ def begin_period(table, state, scratch, log, k, q, qd, info):
     return True
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _wear(table, state, scratch, k, ds):
     """Remove the wear of sliding distance ds [m] under joint k's last evaluation [m^3]."""
     c = scratch.contact[k]
     law = table.ints[k]
     p = table.params[k]
-    coef = wear_coefficient(table.user, k, law[I_WEAR], abs(c[C_FT]) / c[C_FN], p[P_WEAR])
+    coef = wear_coefficient(table.laws, k, law[I_WEAR], abs(c[C_FT]) / c[C_FN], p[P_WEAR])
     volume = coef * c[C_FN] * ds
     share = p[P_SHARE]
     slot = int(c[C_SURFACE])
@@ -424,7 +432,7 @@ def _wear(table, state, scratch, k, ds):
     return volume
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _track_ranges(law, p, c, totals, h):
     """Time and extent of the step [s] beyond the laws' ranges, into totals (T_*_TIME, _MAX).
 
@@ -446,7 +454,7 @@ def _track_ranges(law, p, c, totals, h):
             totals[time_slot] += h
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def accumulate(table, state, scratch, log, t_old, t_new, q_mid, qd_mid, snap_times, first):
     """Wear and totals of the step [t_old, t_new] [s] from its midpoint state.
 
@@ -467,7 +475,7 @@ def accumulate(table, state, scratch, log, t_old, t_new, q_mid, qd_mid, snap_tim
             _track_peaks(totals, c)
             totals[T_FRICTION_ENERGY] -= c[C_FT] * c[C_VT] * h
             sliding_speed = slip_speed(
-                table.user, k, table.ints[k, I_FRICTION], c[C_VT], p[P_F0], p[P_F1], p[P_F2]
+                table.laws, k, table.ints[k, I_FRICTION], c[C_VT], p[P_F0], p[P_F1], p[P_F2]
             )
             totals[T_SLIDING] += sliding_speed * h
         _track_ranges(table.ints[k], p, c, totals, h)
@@ -488,7 +496,7 @@ def accumulate(table, state, scratch, log, t_old, t_new, q_mid, qd_mid, snap_tim
             )
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def write_outputs(table, scratch, row, c):
     """Write each joint's ``OUTPUT_NAMES`` columns from its last evaluation from column c.
 
@@ -509,14 +517,14 @@ def write_outputs(table, scratch, row, c):
     return c
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def elastic_energy(table, scratch):
     """Elastic energy stored in the last evaluated contacts [J]."""
     energy = 0.0
     for k in range(table.ints.shape[0]):
         p = table.params[k]
         energy += law_energy(
-            table.user, k, table.ints[k, I_NORMAL], scratch.contact[k, C_DELTA], p[P_K],
+            table.laws, k, table.ints[k, I_NORMAL], scratch.contact[k, C_DELTA], p[P_K],
             p[P_EXP], p[P_ESTAR], p[P_C], p[P_WIDTH],
         )  # fmt: skip
     return energy

@@ -9,7 +9,7 @@ from numba import njit
 from ..kinematics import point_position
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def apply_force_at(q, g, b, s_x, s_y, off_x, off_y, fx, fy):
     """Add force (fx, fy) [N] acting at body point s plus the global offset off [m] of body b."""
     if b < 0:
@@ -22,7 +22,7 @@ def apply_force_at(q, g, b, s_x, s_y, off_x, off_y, fx, fy):
     g[3 * b + 2] += arm_x * fy - arm_y * fx
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def apply_torque(g, b, torque):
     """Add a torque [N m] to body b."""
     if b >= 0:

@@ -45,10 +45,11 @@ from numba import njit
 from ..kinematics import angle, point_position
 from ..laws.segments import add_wear, depth_along
 from ..laws.user import (
-    NoUserLaws,
+    KindLaws,
     UserLaws,
     damped,
     elastic_force,
+    kind_laws,
     slip_speed,
     tangential_force,
     wear_coefficient,
@@ -68,6 +69,10 @@ I_FEEDBACK = 6  # 1: the worn depths feed back into the penetrations
 I_SEGMENTS = 7  # segments of each surface
 I_ENDS = 8  # 1: a finite guide, whose edges touch the slider's faces
 N_INTS = 9
+
+# The family of each law-code column (``model.laws`` keys): what the loop is compiled for.
+LAW_COLUMNS = {"normal_law": I_NORMAL, "damping": I_DAMPING, "friction_law": I_FRICTION,
+               "wear_law": I_WEAR}  # fmt: skip
 
 # Columns of SliderTable.params (SI).
 P_G_X = 0  # guide point on the centreline, guide body's frame [m]
@@ -164,7 +169,7 @@ class SliderTable(NamedTuple):
 
     ints: np.ndarray  # (ns, N_INTS) int64
     params: np.ndarray  # (ns, N_PARAMS)
-    user: UserLaws | NoUserLaws  # the rows' laws registered from Python
+    laws: KindLaws  # the rows' laws: the codes compiled, and those registered from Python
 
 
 class SliderState(NamedTuple):
@@ -194,20 +199,20 @@ def make_tables(
     ints: np.ndarray,
     params: np.ndarray,
     snapshots: int,
-    user: UserLaws | NoUserLaws | None = None,
+    user: UserLaws | None = None,
 ) -> tuple[SliderTable, SliderState, SliderLog, SliderScratch]:
     """Allocate a run's arrays for the joints of ``ints`` and ``params``, unworn (Python).
 
     ``user``: the rows' user laws (``laws.user``); None: no row has one.
     """
-    user = NoUserLaws(rows=ints.shape[0]) if user is None else user
     ns = ints.shape[0]
+    ints = ints.astype(np.int64).reshape(ns, N_INTS)
     segments = int(ints[:, I_SEGMENTS].max(initial=1))
     return (
         SliderTable(
-            ints=ints.astype(np.int64).reshape(ns, N_INTS),
+            ints=ints,
             params=params.astype(np.float64).reshape(ns, N_PARAMS),
-            user=user,
+            laws=kind_laws(ints, LAW_COLUMNS, user),
         ),
         SliderState(
             contact_on=np.zeros(ns * SLOTS, dtype=np.int64),
@@ -239,7 +244,7 @@ def output_names(finite_guide: bool) -> tuple[str, ...]:
     )
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _frames(q, p, ig, isl):
     """Global G, u and S, u_s: (gx, gy, ux, uy, sx, sy, usx, usy) [m, -]."""
     gx, gy = point_position(q, ig, p[P_G_X], p[P_G_Y])
@@ -252,14 +257,14 @@ def _frames(q, p, ig, isl):
     return gx, gy, ux, uy, sx, sy, usx, usy
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _surface(state, law, k, surface):
     """Worn depths of one surface [m]; empty without wear feedback."""
     segments = law[I_SEGMENTS] if law[I_FEEDBACK] else 0
     return state.wear[k, surface, :segments]
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _geometry(table, state, k, i, q, out):
     """Contact i of joint k at q: delta, P, nu and the positions along both surfaces, into out."""
     law = table.ints[k]
@@ -295,7 +300,7 @@ def _geometry(table, state, k, i, q, out):
     out[C_X_SLIDER] = x_slider
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _evaluate(table, state, scratch, k, i, q, qd):
     """Geometry and forces of contact i of joint k at (q, q'), into scratch.contact[k, i]."""
     out = scratch.contact[k, i]
@@ -319,17 +324,17 @@ def _evaluate(table, state, scratch, k, i, q, qd):
     if state.contact_on[slot]:
         impact_speed = state.impact_speed[slot]
     elastic = elastic_force(
-        table.user, k, law[I_NORMAL], delta, p[P_K], p[P_EXP], p[P_ESTAR], p[P_H], p[P_WIDTH]
+        table.laws, k, law[I_NORMAL], delta, p[P_K], p[P_EXP], p[P_ESTAR], p[P_H], p[P_WIDTH]
     )
-    f_n = damped(table.user, k, elastic, out[C_DDOT], impact_speed, law[I_DAMPING], p[P_CE])
+    f_n = damped(table.laws, k, elastic, out[C_DDOT], impact_speed, law[I_DAMPING], p[P_CE])
     out[C_FN] = f_n
     out[C_FT] = tangential_force(
-        table.user, k, law[I_FRICTION], out[C_VT], f_n, p[P_CF], p[P_F0], p[P_F1], p[P_F2]
+        table.laws, k, law[I_FRICTION], out[C_VT], f_n, p[P_CF], p[P_F0], p[P_F1], p[P_F2]
     )
     out[C_ELASTIC] = elastic
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _material_velocity(q, qd, b, px, py):
     """Velocity [m/s] of body b's material point at the global position (px, py) [m]."""
     if b < 0:
@@ -338,20 +343,20 @@ def _material_velocity(q, qd, b, px, py):
     return qd[3 * b] - w * (py - q[3 * b + 1]), qd[3 * b + 1] + w * (px - q[3 * b])
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _tangent(c):
     """tau: the contact's normal nu turned by -90 deg, along the surface slid on."""
     return c[C_NY], -c[C_NX]
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _force_on_slider(c):
     """The contact's force on the slider, -f_n nu + f_t tau [N]."""
     tau_x, tau_y = _tangent(c)
     return -c[C_FN] * c[C_NX] + c[C_FT] * tau_x, -c[C_FN] * c[C_NY] + c[C_FT] * tau_y
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def add_forces(table, state, scratch, q, qd, g):
     """Evaluate every contact and add its forces on slider and guide to g [N, N, N m].
 
@@ -373,14 +378,14 @@ def add_forces(table, state, scratch, q, qd, g):
             _apply_at_point(q, g, law[I_GUIDE], c[C_PX], c[C_PY], -fx, -fy)
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _apply_at_point(q, g, b, px, py, fx, fy):
     """Add the force (fx, fy) [N] acting at the global position (px, py) [m] on body b."""
     if b >= 0:
         apply_force_at(q, g, b, 0.0, 0.0, px - q[3 * b], py - q[3 * b + 1], fx, fy)
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def penetration_excess(table, state, scratch, slot, q, qd):
     """Penetration of a contact slot beyond its contact tolerance at (q, q') [m]."""
     k, i = slot // SLOTS, slot % SLOTS
@@ -388,13 +393,13 @@ def penetration_excess(table, state, scratch, slot, q, qd):
     return scratch.contact[k, i, C_DELTA] - table.params[k, P_TOL]
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def tolerance(table, slot):
     """Contact tolerance of a slot [m]."""
     return table.params[slot // SLOTS, P_TOL]
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def begin_period(table, state, scratch, log, slot, q, qd, info):
     """Open or close a slot's contact period at a step end; True when one opens (info filled)."""
     excess = penetration_excess(table, state, scratch, slot, q, qd)
@@ -419,12 +424,12 @@ def begin_period(table, state, scratch, log, slot, q, qd, info):
     return True
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _wear(table, state, k, i, c, ds):
     """Remove the wear of sliding distance ds [m] under contact i; return the volume [m^3]."""
     law = table.ints[k]
     p = table.params[k]
-    coef = wear_coefficient(table.user, k, law[I_WEAR], abs(c[C_FT]) / c[C_FN], p[P_WEAR])
+    coef = wear_coefficient(table.laws, k, law[I_WEAR], abs(c[C_FT]) / c[C_FN], p[P_WEAR])
     volume = coef * c[C_FN] * ds
     segments = law[I_SEGMENTS]
     top = i % 2 == 0
@@ -436,7 +441,7 @@ def _wear(table, state, k, i, c, ds):
     return volume
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def accumulate(table, state, scratch, log, t_old, t_new, q_mid, qd_mid, snap_times, first):
     """Wear and totals of the step [t_old, t_new] [s] from its midpoint state.
 
@@ -462,7 +467,7 @@ def accumulate(table, state, scratch, log, t_old, t_new, q_mid, qd_mid, snap_tim
             totals[T_FRICTION_ENERGY] -= c[C_FT] * c[C_VT] * h
             p = table.params[k]
             speeds[i] = slip_speed(
-                table.user, k, table.ints[k, I_FRICTION], c[C_VT], p[P_F0], p[P_F1], p[P_F2]
+                table.laws, k, table.ints[k, I_FRICTION], c[C_VT], p[P_F0], p[P_F1], p[P_F2]
             )
             totals[T_SLIDING] += speeds[i] * h
         if touching:
@@ -479,7 +484,7 @@ def accumulate(table, state, scratch, log, t_old, t_new, q_mid, qd_mid, snap_tim
         totals[T_WORN_VOLUME] += _wear_all(table, state, scratch, k, speeds, t_new - t_from)
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _track_ranges(p, contacts, totals, h):
     """The step's h [s] beyond the laws' ranges, and the largest ratios, into totals.
 
@@ -505,7 +510,7 @@ def _track_ranges(p, contacts, totals, h):
         totals[T_PATCH_TIME] += h
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _wear_all(table, state, scratch, k, speeds, dt):
     """The wear of every sliding contact of joint k over dt [s]; the volume [m^3]."""
     volume = 0.0
@@ -515,7 +520,7 @@ def _wear_all(table, state, scratch, k, speeds, dt):
     return volume
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def write_outputs(table, scratch, row, c):
     """Write each joint's columns (``output_names``) from its last evaluation from column c.
 
@@ -552,7 +557,7 @@ def write_outputs(table, scratch, row, c):
     return c
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def elastic_energy(table, scratch):
     """Elastic energy stored in the last evaluated contacts [J]."""
     energy = 0.0
@@ -560,7 +565,7 @@ def elastic_energy(table, scratch):
         p = table.params[k]
         for i in range(SLOTS):
             energy += law_energy(
-                table.user, k, table.ints[k, I_NORMAL], scratch.contact[k, i, C_DELTA], p[P_K],
+                table.laws, k, table.ints[k, I_NORMAL], scratch.contact[k, i, C_DELTA], p[P_K],
                 p[P_EXP], p[P_ESTAR], p[P_H], p[P_WIDTH],
             )  # fmt: skip
     return energy

@@ -70,7 +70,7 @@ def make_scratch(n: int, m: int, mech: NamedTuple) -> AugmentedScratch:
     )
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _factor_rows(mech, wk):
     """Add Phi_q^T W Phi_q (W = wk.weight) to the diagonal in wk.lead, and factor it."""
     cq = wk.cq
@@ -87,7 +87,7 @@ def _factor_rows(mech, wk):
     return envelope_factor(mech.coord_first, mech.coord_ptr, lead, True)
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _factor_lead(mech, wk):
     """Penalties w_r and the factor of M + Phi_q^T W Phi_q. False if not positive definite."""
     inv_mass = mech.inv_mass
@@ -107,7 +107,7 @@ def _factor_lead(mech, wk):
     return _factor_rows(mech, wk)
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _solve_lead(mech, wk, force, coef, out):
     """Out = (M + Phi_q^T W Phi_q)^-1 (force + Phi_q^T coef), with the factored lead."""
     x = wk.x_coords
@@ -126,7 +126,7 @@ def _solve_lead(mech, wk, force, coef, out):
         out[c] = x[order[c]]
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def solve(wk, t, y, mech):
     """Iterations for lam (and q'' in wk.qdd), target c = gamma. False if they fail."""
     if not _factor_lead(mech, wk):
@@ -183,11 +183,12 @@ def solve(wk, t, y, mech):
     if not settled and worst > UNSETTLED * largest:
         return False  # not near a singular position: a badly conditioned system
     wk.evaluated[0] = t
-    wk.evaluated[1:] = y
+    for i in range(y.shape[0]):  # an element loop: an array into a slice compiles a shape check
+        wk.evaluated[1 + i] = y[i]
     return True
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def row_multipliers(wk, mech):
     """With redundant constraints, or near a singular position, lam becomes the least-norm set.
 
@@ -239,13 +240,13 @@ def row_multipliers(wk, mech):
         wk.lam[r] = row_dot(mech, wk.cq, r, z)
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _evaluated_at(wk, t, y):
     """Whether the last evaluation (and its factor) was at time t [s] and state y."""
     return wk.evaluated[0] == t and np.array_equal(wk.evaluated[1:], y)
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _velocity_violation(mech, wk, qd):
     """Phi' = Phi_q q' + Phi_t into wk.x_rows; returns its 2-norm [m/s, rad/s]."""
     for r in range(wk.phi.shape[0]):
@@ -253,7 +254,7 @@ def _velocity_violation(mech, wk, qd):
     return norm(wk.x_rows)
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _correct(mech, wk, v, violation):
     """Add to v the M-orthogonal correction toward Phi_q dv = -violation (lead factored)."""
     coef = wk.x_rows
@@ -265,7 +266,7 @@ def _correct(mech, wk, v, violation):
         v[c] += wk.qdd[c]
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def project(wk, t, y, mech):
     """The 2-norm of Phi the step ended with [m, rad]; then y is moved onto Phi = 0, Phi' = 0.
 

@@ -39,7 +39,7 @@ def make_scratch(n: int, m: int, mech: NamedTuple) -> BaumgarteScratch:
     )
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def solve(wk, t, y, mech):
     """Lam from the Schur complement; False if it is singular."""
     inv_mass = mech.inv_mass
@@ -71,12 +71,12 @@ def solve(wk, t, y, mech):
     return True
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def project(wk, t, y, mech):
     """The 2-norm of Phi at the step's end, from its last evaluation there [m, rad]."""
     return norm(wk.phi)
 
 
-@njit(cache=True, no_cpython_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def row_multipliers(wk, mech):
     """Lam as solved: unique, the constraints being independent."""

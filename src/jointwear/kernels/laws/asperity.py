@@ -78,7 +78,7 @@ _INV_SQRT_2PI = 1.0 / math.sqrt(2.0 * math.pi)
 _INV_SQRT_2 = 1.0 / math.sqrt(2.0)
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def f52(lam: float) -> float:
     """Greenwood-Tripp integral F_5/2(lam) [-] by the fit of Hu et al. (1994).
 
@@ -90,7 +90,7 @@ def f52(lam: float) -> float:
     return _FIT_SCALE * (_FIT_END - lam) ** _FIT_EXPONENT
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def asperity_load(h_min: float, sigma: float, scale: float, r_star: float, width: float) -> float:
     """Total asperity load W [N] on a journal with minimum mean-plane gap h_min [m].
 
@@ -111,7 +111,7 @@ def asperity_load(h_min: float, sigma: float, scale: float, r_star: float, width
     )
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def asperity_energy(h_min: float, sigma: float, scale: float, r_star: float, width: float) -> float:
     """Elastic energy [J] the asperities store at minimum gap h_min [m] (arguments as the load).
 
@@ -124,7 +124,7 @@ def asperity_energy(h_min: float, sigma: float, scale: float, r_star: float, wid
     return sigma * reach * load / (_FIT_EXPONENT + 1.5)
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def mean_gap(h: float, sigma: float) -> float:
     """Expected local gap E[max(h - z, 0)] = sigma (lam Phi(lam) + phi(lam)) [m], lam = h / sigma.
 
@@ -136,7 +136,7 @@ def mean_gap(h: float, sigma: float) -> float:
     return sigma * (lam * below + _INV_SQRT_2PI * math.exp(-0.5 * lam * lam))
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def film_eccentricity(delta: float, gap: float, sigma: float) -> float:
     """The mixed film's eccentricity ratio [-]: 1 - mean_gap(max(-delta, 0), sigma) / gap.
 

@@ -72,7 +72,7 @@ _MIN_POINTS = 32
 _MAX_POINTS = 2048
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def contact_half_angle(e: float, c: float) -> float:
     """Half-angle alpha0 [rad] of the arc where contact is possible, acos(c / e).
 
@@ -85,7 +85,7 @@ def contact_half_angle(e: float, c: float) -> float:
     return math.acos(c / e)
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def foundation_points(alpha0: float, sectors: int) -> int:
     """Number of integration points m over the arc of half-angle alpha0 [rad].
 
@@ -104,7 +104,7 @@ def foundation_points(alpha0: float, sectors: int) -> int:
     return m + m % 2
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def _wear_depth(theta: float, depths: NDArray[np.float64]) -> float:
     """``depth_at``, or 0 for an empty array (a surface without wear feedback) [m]."""
     if depths.shape[0] == 0:
@@ -112,7 +112,7 @@ def _wear_depth(theta: float, depths: NDArray[np.float64]) -> float:
     return depth_at(theta, depths)
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def interference(
     alpha: float,
     e: float,
@@ -136,7 +136,7 @@ def interference(
     return max(0.0, -gap)
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def foundation_load(
     e: float,
     c: float,
@@ -176,7 +176,7 @@ def foundation_load(
     return scale * along_n, scale * total, peak
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def spread_foundation_wear(
     depths: NDArray[np.float64],
     theta: float,

@@ -52,6 +52,8 @@ from enum import IntEnum
 import numpy as np
 from numba import njit
 
+from .dispatch import Dispatch
+
 
 class FrictionLaw(IntEnum):
     """Codes of the friction laws (``model.laws.friction.FRICTION``, whose records name them)."""
@@ -61,7 +63,7 @@ class FrictionLaw(IntEnum):
     STICK_SLIP = 2
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def _sign(x):
     if x > 0.0:
         return 1.0
@@ -70,7 +72,7 @@ def _sign(x):
     return 0.0
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def _ramp(s, s0, s1):
     """0 for s <= s0, linear to 1 at s1, 1 beyond (a step at s0 when s1 <= s0)."""
     if s <= s0:
@@ -80,7 +82,7 @@ def _ramp(s, s0, s1):
     return (s - s0) / (s1 - s0)
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def ambrosio(v_t: float, f_n: float, c_f: float, v0: float, v1: float) -> float:
     """Coulomb friction with Ambrosio's dynamic correction [N].
 
@@ -94,7 +96,7 @@ def ambrosio(v_t: float, f_n: float, c_f: float, v0: float, v1: float) -> float:
     return -c_f * _ramp(abs(v_t), v0, v1) * f_n * _sign(v_t)
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def coulomb(v_t: float, f_n: float, c_f: float, v_reg: float) -> float:
     """Coulomb friction regularised linearly over abs(v_t) < v_reg [N].
 
@@ -112,7 +114,7 @@ def coulomb(v_t: float, f_n: float, c_f: float, v_reg: float) -> float:
     return -c_f * f_n * _sign(v_t)
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def stick_slip(v_t: float, f_n: float, c_f: float, mu_s: float, dv: float, v_tr: float) -> float:
     """Velocity-based Karnopp-type stick-slip friction [N] (module docstring).
 
@@ -132,58 +134,46 @@ def stick_slip(v_t: float, f_n: float, c_f: float, mu_s: float, dv: float, v_tr:
     return -mu * f_n * _sign(v_t)
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def coulomb_sliding(v_t: float) -> float:
     """Sliding speed [m/s] of Coulomb friction: abs(v_t), sticking only at v_t = 0."""
     return abs(v_t)
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def ambrosio_sliding(v_t: float, v0: float) -> float:
     """Sliding speed [m/s] under Ambrosio's law: abs(v_t), 0 up to v0 (where c_d = 0)."""
     s = abs(v_t)
     return s if s > v0 else 0.0
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def stick_slip_sliding(v_t: float, dv: float) -> float:
     """Sliding speed [m/s] under stick-slip friction: abs(v_t), 0 inside the stick band dv."""
     s = abs(v_t)
     return s if s > dv else 0.0
 
 
-# The dispatchers: one branch per code, NaN for a code without a law, never another law.
+# The dispatchers: per code, the law's function and the arguments it takes (``dispatch``).
+tangential_force = Dispatch(
+    "friction_law",
+    {
+        FrictionLaw.COULOMB: (coulomb, "v_t f_n c_f p0"),
+        FrictionLaw.AMBROSIO: (ambrosio, "v_t f_n c_f p0 p1"),
+        FrictionLaw.STICK_SLIP: (stick_slip, "v_t f_n c_f p0 p1 p2"),
+    },
+    "v_t f_n c_f p0 p1 p2", np.nan,
+)  # fmt: skip
+"""Friction force f_t [N]; p0, p1, p2 as in the module docstring's table."""
 
-
-@njit(cache=True)
-def tangential_force(
-    law: int, v_t: float, f_n: float, c_f: float, p0: float, p1: float, p2: float
-) -> float:
-    """Friction force f_t [N] by the law with code ``law`` (``FrictionLaw``); NaN.
-
-    p0, p1, p2 as in the module docstring's table, packed by the law's record.
-    """
-    if law == FrictionLaw.COULOMB:
-        return coulomb(v_t, f_n, c_f, p0)
-    if law == FrictionLaw.AMBROSIO:
-        return ambrosio(v_t, f_n, c_f, p0, p1)
-    if law == FrictionLaw.STICK_SLIP:
-        return stick_slip(v_t, f_n, c_f, p0, p1, p2)
-    return np.nan
-
-
-@njit(cache=True)
-def slip_speed(law: int, v_t: float, p0: float, p1: float, p2: float) -> float:
-    """Speed [m/s] at which the contact slides, and so wears: abs(v_t), or 0 while it sticks.
-
-    Same law code and parameters as ``tangential_force``: sticking is abs(v_t) <= v0 for
-    AMBROSIO (c_d = 0), abs(v_t) <= dv for STICK_SLIP and v_t = 0 for COULOMB; NaN for a
-    code without a law.
-    """
-    if law == FrictionLaw.COULOMB:
-        return coulomb_sliding(v_t)
-    if law == FrictionLaw.AMBROSIO:
-        return ambrosio_sliding(v_t, p0)
-    if law == FrictionLaw.STICK_SLIP:
-        return stick_slip_sliding(v_t, p1)
-    return np.nan
+slip_speed = Dispatch(
+    "friction_law",
+    {
+        FrictionLaw.COULOMB: (coulomb_sliding, "v_t"),
+        FrictionLaw.AMBROSIO: (ambrosio_sliding, "v_t p0"),
+        FrictionLaw.STICK_SLIP: (stick_slip_sliding, "v_t p1"),
+    },
+    "v_t p0 p1 p2", np.nan,
+)  # fmt: skip
+"""Speed [m/s] at which the contact slides, and so wears: abs(v_t), or 0 while it sticks
+(abs(v_t) <= v0 for AMBROSIO, abs(v_t) <= dv for STICK_SLIP, v_t = 0 for COULOMB)."""

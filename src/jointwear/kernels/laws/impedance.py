@@ -62,7 +62,7 @@ HEADER = 6  # floats before the values
 AT_LAYOUT, AT_N_S, AT_N_CHI, AT_S_MAX, AT_RATIO, AT_STRETCH = 0, 1, 2, 3, 4, 5
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def _weights(t: float) -> tuple[float, float, float, float]:
     """Catmull-Rom weights of the nodes -1, 0, 1, 2 at 0 <= t <= 1."""
     t2 = t * t
@@ -75,7 +75,7 @@ def _weights(t: float) -> tuple[float, float, float, float]:
     )
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def _slopes(t: float) -> tuple[float, float, float, float]:
     """d/dt of ``_weights``."""
     t2 = t * t
@@ -87,7 +87,7 @@ def _slopes(t: float) -> tuple[float, float, float, float]:
     )
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def _node_angle(values: np.ndarray, chi: float) -> float:
     """The node coordinate theta in [-pi, pi] of chi: theta + beta sin theta = chi (Newton)."""
     beta = values[AT_STRETCH]
@@ -98,7 +98,7 @@ def _node_angle(values: np.ndarray, chi: float) -> float:
     return theta
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def _interpolate(values: np.ndarray, s: float, theta: float) -> tuple[float, float, float, float]:
     """G_r, G_t and their s-derivatives at 0 <= s <= s_max, theta in [-pi, pi]."""
     n_s = int(values[AT_N_S])
@@ -127,7 +127,7 @@ def _interpolate(values: np.ndarray, s: float, theta: float) -> tuple[float, flo
     return g_r, g_t, dg_r, dg_t
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def _table(values: np.ndarray, s: float, chi: float) -> tuple[float, float]:
     """G(s, chi) at s >= 0, continued beyond s_max (module docstring)."""
     s_max = values[AT_S_MAX]
@@ -140,7 +140,7 @@ def _table(values: np.ndarray, s: float, chi: float) -> tuple[float, float]:
     return g_r + rise * dg_r, g_t + rise * dg_t
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def _impedance(values: np.ndarray, eps: float, v_r: float, v_t: float) -> tuple[float, float]:
     """K(V) for V = (v_r, v_t) [m/s], 0 <= eps < 1: F = mu L R^3 / c^3 K [N]."""
     q = 1.0 - eps * eps
@@ -154,7 +154,7 @@ def _impedance(values: np.ndarray, eps: float, v_r: float, v_t: float) -> tuple[
     return scale * g_r, scale * g_t
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def film_impedance(values: np.ndarray, eps: float, psi: float) -> tuple[float, float]:
     """Dimensionless film force (W_r, W_t) [-] of a unit V at the angle psi [rad] from e_r.
 
@@ -164,7 +164,7 @@ def film_impedance(values: np.ndarray, eps: float, psi: float) -> tuple[float, f
     return _impedance(values, eps, math.cos(psi), math.sin(psi))
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def finite_bearing_forces(
     values: np.ndarray,
     eps: float,

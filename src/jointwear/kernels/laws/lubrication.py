@@ -107,6 +107,7 @@ from enum import IntEnum
 import numpy as np
 from numba import njit
 
+from .dispatch import Dispatch
 from .impedance import finite_bearing_forces
 
 
@@ -124,7 +125,7 @@ class FilmModel(IntEnum):
     FINITE_BEARING = 3
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def squeeze_side(eps: float, eps_dot: float, v: float) -> float:
     """Smooth sign s = cos beta in [-1, 1] of the squeeze term of f_t [-].
 
@@ -137,7 +138,7 @@ def squeeze_side(eps: float, eps_dot: float, v: float) -> float:
     return wedge / size if size > 0.0 else 1.0
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def short_bearing_forces(
     eps: float,
     eps_dot: float,
@@ -170,7 +171,7 @@ def short_bearing_forces(
     return f_r, f_t
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def long_bearing_forces(
     eps: float,
     eps_dot: float,
@@ -207,35 +208,22 @@ def long_bearing_forces(
     return f_r, f_t
 
 
-@njit(cache=True)
-def film_force_components(
-    model: int,
-    table: np.ndarray,
-    eps: float,
-    eps_dot: float,
-    gamma_dot: float,
-    w: float,
-    mu: float,
-    r: float,
-    width: float,
-    c: float,
-) -> tuple[float, float]:
-    """Film force (f_r, f_t) [N] on the journal by ``model`` (``FilmModel``).
+_FILM = "eps eps_dot gamma_dot w mu r width c"  # the films' arguments
 
-    ``table``: the finite bearing's impedance table for the joint's L/D (``film.impedance``),
-    read by that law only. (NaN, NaN) for a code without a film (a dry joint has none),
-    never another film.
-    """
-    if model == FilmModel.SHORT_BEARING:
-        return short_bearing_forces(eps, eps_dot, gamma_dot, w, mu, r, width, c)
-    if model == FilmModel.LONG_BEARING:
-        return long_bearing_forces(eps, eps_dot, gamma_dot, w, mu, r, width, c)
-    if model == FilmModel.FINITE_BEARING:
-        return finite_bearing_forces(table, eps, eps_dot, gamma_dot, w, mu, r, width, c)
-    return np.nan, np.nan
+film_force_components = Dispatch(
+    "lubrication",
+    {
+        FilmModel.SHORT_BEARING: (short_bearing_forces, _FILM),
+        FilmModel.LONG_BEARING: (long_bearing_forces, _FILM),
+        FilmModel.FINITE_BEARING: (finite_bearing_forces, "table " + _FILM),
+    },
+    "table " + _FILM, (np.nan, np.nan),
+)  # fmt: skip
+"""Film force (f_r, f_t) [N] on the journal. ``table``: the finite bearing's impedance table
+for the joint's L/D (``film.impedance``), read by that law only. A dry joint has no film."""
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def couette_torque(eps: float, w_rel: float, mu: float, r: float, width: float, c: float) -> float:
     """Couette shear torque T_c = 2 pi mu R^3 L w_rel / (c sqrt(1 - eps^2)) [N m].
 
@@ -246,7 +234,7 @@ def couette_torque(eps: float, w_rel: float, mu: float, r: float, width: float, 
     return 2.0 * math.pi * mu * r**3 * width * w_rel / (c * math.sqrt(1.0 - eps * eps))
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def film_power_loss(
     f_r: float,
     f_t: float,
@@ -270,7 +258,7 @@ def film_power_loss(
     return couette * w_rel + c * (0.5 * eps * (w - 2.0 * gamma_dot) * f_t - eps_dot * f_r)
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def film_torques(f_t: float, couette: float, e: float) -> tuple[float, float]:
     """Shear torques of the film (on the journal, on the bearing) [N m].
 

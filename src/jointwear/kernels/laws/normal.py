@@ -54,6 +54,8 @@ from enum import IntEnum
 import numpy as np
 from numba import njit
 
+from .dispatch import Dispatch
+
 # Gauss-Legendre nodes and weights on [0, 1], for the elastic energy of Liu's law.
 GAUSS_NODES, GAUSS_WEIGHTS = np.polynomial.legendre.leggauss(12)
 GAUSS_NODES = 0.5 * (GAUSS_NODES + 1.0)
@@ -81,7 +83,7 @@ class Damping(IntEnum):
 # ----------------------------------------------------------------------- elastic laws
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def hertz(delta: float, k: float, n: float) -> float:
     """Power-law force K delta^n [N] (zero without penetration).
 
@@ -94,7 +96,7 @@ def hertz(delta: float, k: float, n: float) -> float:
     return k * delta**n
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def johnson_switch(e_star: float, d_r: float) -> tuple[float, float]:
     """(f_s [N/m], delta_s [m]) where Johnson's law hands over to its tangent line.
 
@@ -105,13 +107,13 @@ def johnson_switch(e_star: float, d_r: float) -> tuple[float, float]:
     return f_s, 8.0 * d_r * math.exp(-3.0)
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def johnson_penetration(f: float, e_star: float, d_r: float) -> float:
     """Penetration [m] of Johnson's law under force per width f [N/m], for 0 < f <= f_s."""
     return f / (math.pi * e_star) * (math.log(4.0 * math.pi * e_star * d_r / f) - 1.0)
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def johnson_load(delta: float, e_star: float, d_r: float) -> float:
     """Force per unit width f [N/m] of Johnson's conformal law at penetration delta [m].
 
@@ -148,7 +150,7 @@ def johnson_load(delta: float, e_star: float, d_r: float) -> float:
     return math.exp(x)
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def johnson(delta: float, e_star: float, d_r: float, width: float) -> float:
     """Johnson's force [N] of a cylinder in a conforming cylindrical seat.
 
@@ -166,7 +168,7 @@ def johnson(delta: float, e_star: float, d_r: float, width: float) -> float:
     return width * johnson_load(delta, e_star, d_r)
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def liu(delta: float, e_star: float, d_r: float, width: float) -> float:
     """Liu et al.'s force [N] of a cylinder in a conforming cylindrical seat.
 
@@ -181,7 +183,7 @@ def liu(delta: float, e_star: float, d_r: float, width: float) -> float:
     return 0.5 * math.pi * e_star * width * delta * math.sqrt(delta / (2.0 * (d_r + delta)))
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def foundation_on_circles(delta: float, k: float, d_r: float, width: float) -> float:
     """Elastic-foundation force [N] of an unworn journal in an unworn bearing.
 
@@ -204,7 +206,7 @@ def foundation_on_circles(delta: float, k: float, d_r: float, width: float) -> f
     return k * width * e * 0.5 * shape
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def hertz_stiffness(delta: float, k: float, n: float) -> float:
     """Stiffness dF/d(delta) = K n delta^(n - 1) [N/m] of the power law (0 without contact)."""
     if delta <= 0.0:
@@ -212,7 +214,7 @@ def hertz_stiffness(delta: float, k: float, n: float) -> float:
     return k * n * delta ** (n - 1.0)
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def hertz_energy(delta: float, k: float, n: float) -> float:
     """Elastic energy K delta^(n + 1) / (n + 1) [J] of the power law (0 without contact)."""
     if delta <= 0.0:
@@ -220,7 +222,7 @@ def hertz_energy(delta: float, k: float, n: float) -> float:
     return k * delta ** (n + 1.0) / (n + 1.0)
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def johnson_stiffness(delta: float, e_star: float, d_r: float, width: float) -> float:
     """Stiffness [N/m] of Johnson's law: pi E* L / (ln(4 pi E* dR / f) - 2), pi E* L beyond f_s."""
     if delta <= 0.0:
@@ -232,7 +234,7 @@ def johnson_stiffness(delta: float, e_star: float, d_r: float, width: float) -> 
     return math.pi * e_star * width / (math.log(4.0 * math.pi * e_star * d_r / f) - 2.0)
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def johnson_energy(delta: float, e_star: float, d_r: float, width: float) -> float:
     """Elastic energy [J] of Johnson's law, U(f) = L f^2 / (2 pi E*) [ln(4 pi E* dR / f) - 3/2].
 
@@ -253,7 +255,7 @@ def johnson_energy(delta: float, e_star: float, d_r: float, width: float) -> flo
     return u + width * (f_s * over + 0.5 * math.pi * e_star * over * over)
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def liu_stiffness(delta: float, e_star: float, d_r: float, width: float) -> float:
     """Stiffness [N/m] of Liu et al.'s law, the derivative of ``liu``."""
     if delta <= 0.0:
@@ -262,13 +264,17 @@ def liu_stiffness(delta: float, e_star: float, d_r: float, width: float) -> floa
     return c * math.sqrt(delta) * (1.5 * d_r + delta) / (d_r + delta) ** 1.5
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def liu_energy(delta: float, e_star: float, d_r: float, width: float) -> float:
-    """Elastic energy [J] of Liu et al.'s law, by quadrature of its force."""
-    return _energy_by_quadrature(ElasticLaw.LIU, delta, 0.0, 0.0, e_star, d_r, width)
+    """Elastic energy [J] of Liu et al.'s law, by quadrature of its force (``quadrature_node``)."""
+    energy = 0.0
+    for i in range(GAUSS_NODES.shape[0]):
+        s, weight = quadrature_node(delta, i)
+        energy += weight * liu(s, e_star, d_r, width)
+    return energy
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def foundation_stiffness(delta: float, k: float, d_r: float, width: float) -> float:
     """Stiffness [N/m] of the foundation on unworn circles, k L (a0 + sin a0 cos a0)."""
     if delta <= 0.0:
@@ -278,94 +284,80 @@ def foundation_stiffness(delta: float, k: float, d_r: float, width: float) -> fl
     return k * width * (a + math.sin(a) * math.cos(a))
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def foundation_energy(delta: float, k: float, d_r: float, width: float) -> float:
     """Elastic energy [J] of the foundation on unworn circles, by quadrature of its force."""
-    return _energy_by_quadrature(ElasticLaw.ELASTIC_FOUNDATION, delta, k, 0.0, 0.0, d_r, width)
-
-
-@njit(cache=True)
-def _energy_by_quadrature(law, delta, k, n, e_star, d_r, width):
-    """The integral of ``elastic_force`` from 0 to delta [J], 12-point Gauss-Legendre.
-
-    With s = delta t^2 the integrand 2 delta t F(delta t^2) is smooth in t.
-    """
-    if delta <= 0.0:
-        return 0.0
     energy = 0.0
     for i in range(GAUSS_NODES.shape[0]):
-        t = GAUSS_NODES[i]
-        force = elastic_force(law, delta * t * t, k, n, e_star, d_r, width)
-        energy += GAUSS_WEIGHTS[i] * 2.0 * delta * t * force
+        s, weight = quadrature_node(delta, i)
+        energy += weight * foundation_on_circles(s, k, d_r, width)
     return energy
 
 
-# The dispatchers below: one branch per code, NaN for a code without a law (a NaN force is
-# caught by the run's non-finite check), never another law.
+@njit(cache=True, no_cfunc_wrapper=True)
+def quadrature_node(delta: float, i: int) -> tuple[float, float]:
+    """Node i of the integral of a force from 0 to delta [m]: (s [m], weight [m]).
 
-
-@njit(cache=True)
-def elastic_force(
-    law: int, delta: float, k: float, n: float, e_star: float, d_r: float, width: float
-) -> float:
-    """Elastic force [N] by the law with code ``law`` (``ElasticLaw``); NaN for another code.
-
-    HERTZ is the power law K delta^n; ELASTIC_FOUNDATION is its closed form on unworn
-    circles with k = (K_f / h) R [Pa] (the joint integrates the worn surfaces itself).
+    The sum of weight F(s) over the 12 nodes is the integral, by Gauss-Legendre in t with
+    s = delta t^2, where the integrand 2 delta t F(delta t^2) is smooth; 0 for delta <= 0.
     """
-    if law == ElasticLaw.HERTZ:
-        return hertz(delta, k, n)
-    if law == ElasticLaw.JOHNSON:
-        return johnson(delta, e_star, d_r, width)
-    if law == ElasticLaw.LIU:
-        return liu(delta, e_star, d_r, width)
-    if law == ElasticLaw.ELASTIC_FOUNDATION:
-        return foundation_on_circles(delta, k, d_r, width)
-    return np.nan
+    t = GAUSS_NODES[i]
+    weight = GAUSS_WEIGHTS[i] * 2.0 * delta * t if delta > 0.0 else 0.0
+    return delta * t * t, weight
 
 
-@njit(cache=True)
-def elastic_stiffness(
-    law: int, delta: float, k: float, n: float, e_star: float, d_r: float, width: float
-) -> float:
-    """Contact stiffness dF/d(delta) [N/m] of the elastic law ``law`` at delta [m]; NaN."""
-    if law == ElasticLaw.HERTZ:
-        return hertz_stiffness(delta, k, n)
-    if law == ElasticLaw.JOHNSON:
-        return johnson_stiffness(delta, e_star, d_r, width)
-    if law == ElasticLaw.LIU:
-        return liu_stiffness(delta, e_star, d_r, width)
-    if law == ElasticLaw.ELASTIC_FOUNDATION:
-        return foundation_stiffness(delta, k, d_r, width)
-    return np.nan
+# The dispatchers: per code, the law's function and the arguments it takes (``dispatch``).
+_ARGUMENTS = "delta k n e_star d_r width"
+_HERTZ, _CONFORMAL, _FOUNDATION = "delta k n", "delta e_star d_r width", "delta k d_r width"
 
+elastic_force = Dispatch(
+    "normal_law",
+    {
+        ElasticLaw.HERTZ: (hertz, _HERTZ),
+        ElasticLaw.JOHNSON: (johnson, _CONFORMAL),
+        ElasticLaw.LIU: (liu, _CONFORMAL),
+        ElasticLaw.ELASTIC_FOUNDATION: (foundation_on_circles, _FOUNDATION),
+    },
+    _ARGUMENTS, np.nan,
+)  # fmt: skip
+"""Elastic force [N]. HERTZ is the power law K delta^n; ELASTIC_FOUNDATION its closed form on
+unworn circles with k = (K_f / h) R [Pa] (the joint integrates the worn surfaces itself)."""
 
-@njit(cache=True)
-def elastic_energy(
-    law: int, delta: float, k: float, n: float, e_star: float, d_r: float, width: float
-) -> float:
-    """Elastic energy [J] stored at penetration delta [m], the integral of the force; NaN."""
-    if law == ElasticLaw.HERTZ:
-        return hertz_energy(delta, k, n)
-    if law == ElasticLaw.JOHNSON:
-        return johnson_energy(delta, e_star, d_r, width)
-    if law == ElasticLaw.LIU:
-        return liu_energy(delta, e_star, d_r, width)
-    if law == ElasticLaw.ELASTIC_FOUNDATION:
-        return foundation_energy(delta, k, d_r, width)
-    return np.nan
+elastic_stiffness = Dispatch(
+    "normal_law",
+    {
+        ElasticLaw.HERTZ: (hertz_stiffness, _HERTZ),
+        ElasticLaw.JOHNSON: (johnson_stiffness, _CONFORMAL),
+        ElasticLaw.LIU: (liu_stiffness, _CONFORMAL),
+        ElasticLaw.ELASTIC_FOUNDATION: (foundation_stiffness, _FOUNDATION),
+    },
+    _ARGUMENTS, np.nan,
+)  # fmt: skip
+"""Contact stiffness dF/d(delta) [N/m] at delta [m]."""
+
+elastic_energy = Dispatch(
+    "normal_law",
+    {
+        ElasticLaw.HERTZ: (hertz_energy, _HERTZ),
+        ElasticLaw.JOHNSON: (johnson_energy, _CONFORMAL),
+        ElasticLaw.LIU: (liu_energy, _CONFORMAL),
+        ElasticLaw.ELASTIC_FOUNDATION: (foundation_energy, _FOUNDATION),
+    },
+    _ARGUMENTS, np.nan,
+)  # fmt: skip
+"""Elastic energy [J] stored at penetration delta [m], the integral of the force."""
 
 
 # ----------------------------------------------------------------------- damping laws
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def undamped(c_e: float) -> float:
     """Hysteresis factor chi = 0 of an elastic contact (no damping) [-]."""
     return 0.0
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def lankarani_nikravesh(c_e: float) -> float:
     """Hysteresis factor chi = 3 (1 - c_e^2) / 4 of Lankarani and Nikravesh (1990) [-].
 
@@ -376,7 +368,7 @@ def lankarani_nikravesh(c_e: float) -> float:
     return 0.75 * (1.0 - c_e * c_e)
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def hunt_crossley(c_e: float) -> float:
     """Hysteresis factor chi = 3 (1 - c_e) / 2 of Hunt and Crossley (1975) [-].
 
@@ -387,7 +379,7 @@ def hunt_crossley(c_e: float) -> float:
     return 1.5 * (1.0 - c_e)
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def flores2011(c_e: float) -> float:
     """Hysteresis factor chi = 8 (1 - c_e) / (5 c_e) of Flores et al. (2011) [-].
 
@@ -397,29 +389,20 @@ def flores2011(c_e: float) -> float:
     return 1.6 * (1.0 - c_e) / c_e
 
 
-@njit(cache=True)
-def hysteresis_factor(damping: int, c_e: float) -> float:
-    """Hysteresis factor chi [-] of the damping law with code ``damping`` (``Damping``); NaN."""
-    if damping == Damping.NONE:
-        return undamped(c_e)
-    if damping == Damping.LANKARANI_NIKRAVESH:
-        return lankarani_nikravesh(c_e)
-    if damping == Damping.HUNT_CROSSLEY:
-        return hunt_crossley(c_e)
-    if damping == Damping.FLORES2011:
-        return flores2011(c_e)
-    return np.nan
+hysteresis_factor = Dispatch(
+    "damping",
+    {
+        Damping.NONE: (undamped, "c_e"),
+        Damping.LANKARANI_NIKRAVESH: (lankarani_nikravesh, "c_e"),
+        Damping.HUNT_CROSSLEY: (hunt_crossley, "c_e"),
+        Damping.FLORES2011: (flores2011, "c_e"),
+    },
+    "c_e", np.nan,
+)  # fmt: skip
+"""Hysteresis factor chi [-] of the damping law."""
 
 
-@njit(cache=True)
-def damped(
-    elastic: float, delta_dot: float, delta_dot_minus: float, damping: int, c_e: float
-) -> float:
-    """Normal force [N] with the damping law of code ``damping`` (``damped_by``)."""
-    return damped_by(elastic, delta_dot, delta_dot_minus, hysteresis_factor(damping, c_e))
-
-
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def damped_by(elastic: float, delta_dot: float, delta_dot_minus: float, chi: float) -> float:
     """Normal force [N]: elastic (1 + chi delta_dot / delta_dot_minus), clamped at zero.
 

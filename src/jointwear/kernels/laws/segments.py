@@ -21,21 +21,21 @@ from numba import njit
 from numpy.typing import NDArray
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def segment_of(x: float, length: float, n: int) -> int:
     """Index of the segment (of n) containing position x [m], clamped to the surface."""
     i = math.floor((x / length + 0.5) * n)
     return min(max(i, 0), n - 1)
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def add_wear(depths: NDArray[np.float64], x: float, length: float, width: float, volume: float):
     """Add a worn volume [m^3] to the segment at x [m] as a uniform depth, in place."""
     n = depths.shape[0]
     depths[segment_of(x, length, n)] += volume * n / (length * width)
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def depth_along(x: float, depths: NDArray[np.float64], length: float) -> float:
     """Wear depth [m] at position x [m]: linear between segment centres; 0 without segments."""
     n = depths.shape[0]

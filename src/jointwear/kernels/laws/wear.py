@@ -38,6 +38,8 @@ import numpy as np
 from numba import njit
 from numpy.typing import NDArray
 
+from .dispatch import Dispatch
+
 
 class WearLaw(IntEnum):
     """Codes of the wear laws (``model.laws.wear.WEAR``, whose records name them)."""
@@ -50,13 +52,13 @@ _TWO_PI = 2.0 * math.pi
 _QUARTER_PI = 0.25 * math.pi  # (u sqrt(1 - u^2) + asin u) / 2 at u = 1
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def archard(k_wear: float) -> float:
     """Archard's depth-rate coefficient dh/ds / p = k_wear [1/Pa] (paper Eq. 13)."""
     return k_wear
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def reye(mu: float, tau: float) -> float:
     """Reye's depth-rate coefficient dh/ds / p = mu / tau [1/Pa] (paper Eq. 9).
 
@@ -66,24 +68,17 @@ def reye(mu: float, tau: float) -> float:
     return mu / tau
 
 
-# The dispatcher: one branch per code, NaN for a code without a law, never another law.
+# The dispatcher: per code, the law's function and the arguments it takes (``dispatch``).
+wear_coefficient = Dispatch(
+    "wear_law",
+    {WearLaw.ARCHARD: (archard, "p0"), WearLaw.REYE: (reye, "mu p0")},
+    "mu p0", np.nan,
+)  # fmt: skip
+"""Depth-rate coefficient [1/Pa]: mu [-] is the friction acting, abs(f_t) / f_n, which Reye's
+law reads; p0 the law's packed parameter (Archard's k_wear [1/Pa], Reye's tau [Pa])."""
 
 
-@njit(cache=True)
-def wear_coefficient(law: int, mu: float, p0: float) -> float:
-    """Depth-rate coefficient [1/Pa] by the law with code ``law`` (``WearLaw``); NaN.
-
-    mu [-] is the friction acting, abs(f_t) / f_n, which Reye's law reads; p0 is the law's
-    packed parameter: Archard's k_wear [1/Pa], Reye's tau [Pa].
-    """
-    if law == WearLaw.ARCHARD:
-        return archard(p0)
-    if law == WearLaw.REYE:
-        return reye(mu, p0)
-    return np.nan
-
-
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def hertz_line_contact(
     f_n: float, r_star: float, e_star: float, width: float
 ) -> tuple[float, float]:
@@ -101,20 +96,20 @@ def hertz_line_contact(
     return b, 2.0 * f_n / (math.pi * b * width)
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def _ellipse_integral(u):
     """(u sqrt(1 - u^2) + asin u) / 2 with u clipped to [-1, 1]."""
     u = min(1.0, max(-1.0, u))
     return 0.5 * (u * math.sqrt(1.0 - u * u) + math.asin(u))
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def sector_of(theta: float, n: int) -> int:
     """Index of the sector (of n) containing the angle theta [rad]."""
     return min(math.floor((theta % _TWO_PI) / (_TWO_PI / n)), n - 1)
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def spread_wear(
     depths: NDArray[np.float64], theta: float, half_angle: float, peak_depth: float
 ) -> None:
@@ -142,7 +137,7 @@ def spread_wear(
         g_low = g_high  # shared edges make the sum telescope to pi / 2 exactly
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def accumulate_wear(
     depths: NDArray[np.float64],
     theta: float,
@@ -174,7 +169,7 @@ def accumulate_wear(
     return share * coef * f_n * ds
 
 
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def depth_at(theta: float, depths: NDArray[np.float64]) -> float:
     """Wear depth [m] of a surface in direction theta [rad].
 
