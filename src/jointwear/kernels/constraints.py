@@ -22,7 +22,7 @@ from .functions import value
 from .kinematics import angle, angular_velocity, point_position, point_velocity, rotate
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True, inline="always")
 def _add(cq, r, side, b, k, value):
     """Add value at row r, coordinate k (0 x, 1 y, 2 phi) of its side-0 or side-1 body b."""
     if b >= 0:

@@ -158,7 +158,7 @@ def _crossing(problem, events, integ, scratch, kind, index, t):
     return excess
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True, inline="always")
 def _locate(problem, events, integ, scratch, kind, index, ta, ga, tb, gb, g_tol):
     """Crossing time in [ta, tb] [s] by the Illinois method on the step's interpolant.
 

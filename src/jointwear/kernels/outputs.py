@@ -24,7 +24,7 @@ def kinetic_energy(qd, mech):
     return energy
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True, inline="always")
 def _reaction(dyn, mech, jt, side, k):
     """Component k of the force joint jt's rows apply to its first (side 0) or second body [N]."""
     r0 = mech.joint_row[jt]

@@ -621,7 +621,7 @@ def _track_film_if_used(table, k, c, totals, qd, h):
 if_used(_track_film_if_used, "lubrication", LUBRICATED, _track_film, _no_track_film)
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True, inline="always")
 def _beyond(totals, time_slot, max_slot, value, limit, h):
     totals[max_slot] = max(totals[max_slot], value)
     if value > limit:
