@@ -76,11 +76,16 @@ SPREAD_HERTZ = 0
 SPREAD_PEAK = 1
 SPREAD_FOUNDATION = 2
 
-# The family of each law-code column (``model.laws`` keys): what the loop is compiled for.
+# Per law-code column, its family (``model.laws`` key) and the laws compiled only for the
+# models that use them (``laws.lawset``): the films and the elastic foundation.
 LAW_COLUMNS = {
-    "normal_law": I_NORMAL, "damping": I_DAMPING, "friction_law": I_FRICTION,
-    "wear_law": I_WEAR, "wear_distribution": I_SPREAD, "lubrication": I_LUBRICATION,
-}  # fmt: skip
+    "normal_law": (I_NORMAL, (ElasticLaw.ELASTIC_FOUNDATION,)),
+    "damping": (I_DAMPING, ()),
+    "friction_law": (I_FRICTION, ()),
+    "wear_law": (I_WEAR, ()),
+    "wear_distribution": (I_SPREAD, (SPREAD_FOUNDATION,)),
+    "lubrication": (I_LUBRICATION, tuple(films.laws)),
+}
 
 # Columns of JournalTable.params (SI).
 P_SB_X = 0  # bearing centre in the bearing body's frame [m]
@@ -443,7 +448,7 @@ def _film_if_used(table, k, out, e, gap, delta, nx, ny, delta_dot, gamma_dot, w,
     """``_film`` where a row is lubricated (compiled only then)."""
 
 
-LUBRICATED = tuple(films.laws)  # the codes of the laws with a film
+LUBRICATED = LAW_COLUMNS["lubrication"][1]  # the codes of the laws with a film
 if_used(_film_if_used, "lubrication", LUBRICATED, _film, _no_film)
 
 

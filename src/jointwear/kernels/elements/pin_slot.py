@@ -104,9 +104,14 @@ I_END_SECTORS = 8  # sectors of each end's half circle
 I_PIN_SECTORS = 9  # sectors of the pin
 N_INTS = 10
 
-# The family of each law-code column (``model.laws`` keys): what the loop is compiled for.
-LAW_COLUMNS = {"normal_law": I_NORMAL, "damping": I_DAMPING, "friction_law": I_FRICTION,
-               "wear_law": I_WEAR}  # fmt: skip
+# Per law-code column, its family (``model.laws`` key) and the laws compiled only for the
+# models that use them (``laws.lawset``): none of this kind's.
+LAW_COLUMNS = {
+    "normal_law": (I_NORMAL, ()),
+    "damping": (I_DAMPING, ()),
+    "friction_law": (I_FRICTION, ()),
+    "wear_law": (I_WEAR, ()),
+}
 
 # Columns of PinSlotTable.params (SI).
 P_C_X = 0  # point C on the slot's centre line, slot body's frame [m]

@@ -70,9 +70,14 @@ I_SEGMENTS = 7  # segments of each surface
 I_ENDS = 8  # 1: a finite guide, whose edges touch the slider's faces
 N_INTS = 9
 
-# The family of each law-code column (``model.laws`` keys): what the loop is compiled for.
-LAW_COLUMNS = {"normal_law": I_NORMAL, "damping": I_DAMPING, "friction_law": I_FRICTION,
-               "wear_law": I_WEAR}  # fmt: skip
+# Per law-code column, its family (``model.laws`` key) and the laws compiled only for the
+# models that use them (``laws.lawset``): none of this kind's.
+LAW_COLUMNS = {
+    "normal_law": (I_NORMAL, ()),
+    "damping": (I_DAMPING, ()),
+    "friction_law": (I_FRICTION, ()),
+    "wear_law": (I_WEAR, ()),
+}
 
 # Columns of SliderTable.params (SI).
 P_G_X = 0  # guide point on the centreline, guide body's frame [m]

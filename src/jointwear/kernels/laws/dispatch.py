@@ -5,11 +5,11 @@ takes (a ``Dispatch``, e.g. ``normal.elastic_force``; the records in ``model.law
 same functions, as tests/test_law_records.py checks). From that one table:
 
 - ``compiled(stub, dispatch, user)`` makes ``stub(laws, row, code, *arguments)`` compile, for
-  the ``LawSet`` of the kind's law table ``laws`` (``lawset``), to one branch per code the
-  kind uses, each calling its law's function with its own arguments; to
-  ``user(laws, row, code, *arguments)`` for the codes of laws registered from Python (from
-  ``USER_CODE`` on), where the kind has any; and to the family's error value for any other
-  code. A law no row uses is not compiled, and no branch can reach another law.
+  the ``LawSet`` of the kind's law table ``laws`` (``lawset``), to one branch per law it
+  compiles (all but the laws on demand no row uses), each calling its law's function with
+  its own arguments; to ``user(laws, row, code, *arguments)`` for the codes of laws
+  registered from Python (from ``USER_CODE`` on), where the kind has any; and to the
+  family's error value for any other code. No branch can reach another law.
 - ``dispatch(code, *arguments)`` calls the same law from Python, uncompiled (``check``, tests).
 """
 
@@ -18,8 +18,7 @@ from collections.abc import Callable
 from numba.extending import overload
 
 from ..structs import JIT_OPTIONS, field_type
-
-USER_CODE = 100  # law codes from here on are laws registered from Python
+from .lawset import USER_CODE
 
 
 class Dispatch:
@@ -51,16 +50,15 @@ class Dispatch:
         return function(*(values[name] for name in names))
 
     def source(self, name: str, codes: tuple[int, ...], user: bool) -> str:
-        """Python source of ``name(laws, row, law, *arguments)`` for the codes used."""
+        """Python source of ``name(laws, row, law, *arguments)`` for the laws of ``codes``."""
         head = ", ".join(("laws", "row", "law", *self.arguments))
         lines = [f"def {name}({head}):"]
         for code in codes:
-            if code in self.laws:
-                _, names = self.laws[code]
-                lines += [
-                    f"    if law == {code}:",
-                    f"        return law_{code}({', '.join(names)})",
-                ]
+            _, names = self.laws[code]
+            lines += [
+                f"    if law == {code}:",
+                f"        return law_{code}({', '.join(names)})",
+            ]
         if user:
             lines += [f"    if law >= {USER_CODE}:", f"        return user({head})"]
         lines.append("    return error")
@@ -81,8 +79,9 @@ def compiled(stub: Callable, dispatch: Dispatch, user: Callable | None = None) -
 
     @overload(stub, strict=False, jit_options=JIT_OPTIONS)
     def _for_codes(laws, row, law, *arguments):
-        codes = field_type(laws, "used").codes(dispatch.family)
-        with_user = user is not None and any(code >= USER_CODE for code in codes)
+        used = field_type(laws, "used")
+        codes = tuple(c for c in dispatch.laws if used.compiles(dispatch.family, c))
+        with_user = user is not None and used.with_user_laws(dispatch.family)
         namespace = dispatch.namespace(user)
         exec(dispatch.source(stub.__name__, codes, with_user), namespace)
         return namespace[stub.__name__]
@@ -94,14 +93,15 @@ def if_used(stub: Callable, family: str, codes: tuple[int, ...], function: Calla
             absent: Callable) -> Callable:  # fmt: skip
     """Make ``stub(table, *arguments)`` compile to ``function`` where the kind uses a law.
 
-    ``table``: a kind's table, with its law table in ``laws``; ``function`` where its law set
-    holds any of ``codes`` in ``family``, else ``absent`` (same arguments, doing nothing):
-    a kind's optional part, such as its film, compiles only for the models that have it.
+    ``table``: a kind's table, with its law table in ``laws``; ``function`` where a row uses
+    any of the laws on demand ``codes`` of ``family``, else ``absent`` (same
+    arguments, doing nothing): a kind's optional part, such as its film, compiles only for
+    the models that have it.
     """
 
     @overload(stub, strict=False, jit_options=JIT_OPTIONS)
     def _choose(table, *arguments):
-        used = field_type(field_type(table, "laws"), "used").codes(family)
-        return (function if set(used) & set(codes) else absent).py_func
+        used = field_type(field_type(table, "laws"), "used")
+        return (function if any(used.uses(family, c) for c in codes) else absent).py_func
 
     return stub

@@ -1,11 +1,15 @@
 """Which laws a kind's rows use: a constant the step loop is compiled for.
 
-A ``LawSet`` holds, per family (its model-file key, e.g. "normal_law"), the codes of the laws
-a contact kind's rows choose. Its numba type (``LawSetType``) carries those codes and no data,
-so code compiled for one law set knows them as constants: the law dispatchers (``dispatch``)
-compile a branch for each code used and for no other, and a kind's optional parts (a film, an
-elastic foundation) compile only where a row uses them. Each law set is its own
-specialisation of the loop, cached like any other.
+A ``LawSet`` holds, per family (its model-file key, e.g. "normal_law"), what decides the code
+the loop compiles: which of the family's laws compiled only on demand the kind's rows use, and
+whether they use laws registered from Python. Its numba type (``LawSetType``) carries that and
+no data, so the law dispatchers (``dispatch``) compile a branch for every law but the unused
+ones on demand, and a kind's optional parts (a film, an elastic foundation) compile only where
+a row uses them. Each law set is its own specialisation of the loop, cached like any other.
+
+The laws on demand are those whose code is large: the films and the elastic foundation.
+The others compile in a few hundredths of a second each, and compile for every model, so
+that models that differ only in them share one specialisation and its cache.
 """
 
 from collections.abc import Iterable, Mapping
@@ -13,19 +17,30 @@ from collections.abc import Iterable, Mapping
 from numba import types
 from numba.extending import NativeValue, models, register_model, typeof_impl, unbox
 
+USER_CODE = 100  # law codes from here on are laws registered from Python
+
 
 class LawSet:
-    """The codes each family's laws have in a kind's rows (Python)."""
+    """What a kind's rows use of each family's laws (Python; module docstring).
 
-    def __init__(self, codes: Mapping[str, Iterable[int]]) -> None:
-        self.families = tuple(
-            sorted(
-                (family, tuple(sorted({int(c) for c in used}))) for family, used in codes.items()
-            )
-        )
+    ``used``: per family, the codes the rows choose; ``on_demand``: per family, the codes
+    compiled only where used.
+    """
+
+    def __init__(
+        self, used: Mapping[str, Iterable[int]], on_demand: Mapping[str, Iterable[int]]
+    ) -> None:
+        families = []
+        for family in sorted(set(used) | set(on_demand)):
+            codes = {int(c) for c in used.get(family, ())}
+            demand = tuple(sorted({int(c) for c in on_demand.get(family, ())}))
+            kept = {c for c in codes if c in demand} | ({USER_CODE} if max(codes, default=0)
+                                                        >= USER_CODE else set())  # fmt: skip
+            families.append((family, tuple(sorted(kept)), demand))
+        self.families = tuple(families)
 
     def __repr__(self) -> str:
-        return f"LawSet({dict(self.families)})"
+        return f"LawSet{self.families}"
 
     def __eq__(self, other: object) -> bool:
         return isinstance(other, LawSet) and other.families == self.families
@@ -35,15 +50,30 @@ class LawSet:
 
 
 class LawSetType(types.Type):
-    """The numba type of a ``LawSet``: its codes, as part of the type."""
+    """The numba type of a ``LawSet``: its families, as part of the type."""
 
-    def __init__(self, families: tuple[tuple[str, tuple[int, ...]], ...]) -> None:
+    def __init__(self, families: tuple[tuple[str, tuple[int, ...], tuple[int, ...]], ...]) -> None:
         self.families = families
         super().__init__(name=f"LawSet{families}")
 
-    def codes(self, family: str) -> tuple[int, ...]:
-        """The codes of ``family`` the rows use (none for a family the kind has not)."""
-        return dict(self.families).get(family, ())
+    def _family(self, family: str) -> tuple[tuple[int, ...], tuple[int, ...]]:
+        for name, used, demand in self.families:
+            if name == family:
+                return used, demand
+        return (), ()
+
+    def compiles(self, family: str, code: int) -> bool:
+        """Whether the law ``code`` of ``family`` is compiled: not on demand, or used."""
+        used, demand = self._family(family)
+        return code not in demand or code in used
+
+    def uses(self, family: str, code: int) -> bool:
+        """Whether a row uses the law on demand ``code`` of ``family``."""
+        return code in self._family(family)[0]
+
+    def with_user_laws(self, family: str) -> bool:
+        """Whether a row's law of ``family`` is registered from Python."""
+        return USER_CODE in self._family(family)[0]
 
 
 @typeof_impl.register(LawSet)

@@ -71,18 +71,24 @@ class UserLaws(NamedTuple):
     params: np.ndarray  # (rows, N_FAMILIES, N_KEYS)
 
 
-def kind_laws(ints: np.ndarray, columns: dict[str, int], user: UserLaws | None) -> KindLaws:
+def kind_laws(
+    ints: np.ndarray, columns: dict[str, tuple[int, tuple[int, ...]]], user: UserLaws | None
+) -> KindLaws:
     """The law table of a kind's rows (Python).
 
-    ``columns``: per family key, the column of ``ints`` that holds the rows' codes; ``user``:
-    the rows' user laws, None where no row has one.
+    ``columns``: per family key, the column of ``ints`` that holds the rows' codes and the
+    family's laws on demand (``lawset``); ``user``: the rows' user laws, None where no row
+    has one.
     """
     rows = ints.shape[0]
     if user is None:
         user = UserLaws(
             np.zeros((rows, N_ADDRESSES), np.int64), np.zeros((rows, N_FAMILIES, N_KEYS))
         )
-    used = LawSet({family: ints[:, column] for family, column in columns.items()})
+    used = LawSet(
+        {family: ints[:, column] for family, (column, _) in columns.items()},
+        {family: on_demand for family, (_, on_demand) in columns.items()},
+    )
     return KindLaws(used=used, address=user.address, params=user.params)
 
 
