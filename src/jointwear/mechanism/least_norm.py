@@ -6,13 +6,15 @@ solved in x = Phi_q^T y, with y from the normal equations of the second kind,
 with the residual until the corrections stop shrinking: iterated regularisation (Riley
 1956), whose every x lies in the row space of Phi_q and whose limit is the minimum-norm
 least-squares solution, as lstsq's. A correction shrinks the error along a singular value s
-of Phi_q by delta / (s^2 + delta); with delta a 1e-9 share of the largest diagonal entry,
-the 2,000-link chain (s^2 down to 3e-7 of it) settles in seven corrections, and a chain ten
-times longer (s^2 ~ 1/N^2) in about 25. The shift keeps the factorisation definite where rows
-depend on each other (redundant constraints, a singular pose); their share of b is left as
-the residual, as lstsq leaves it, and rounding of that share, amplified by 1/delta, bounds
-the agreement with lstsq there to about 1e-5 relative (1e-13 where b is consistent). scipy
-has no sparse rank-revealing QR, which would give the same without the corrections.
+of Phi_q by delta / (s^2 + delta), delta a 1e-12 share of the largest diagonal entry: the
+2,000-link chain (s^2 down to 3e-7 of it) settles in three corrections, one of 20,000 links
+in five. The shift keeps the factorisation definite where rows depend on each other
+(redundant constraints, a singular pose), and there it costs accuracy where they contradict
+each other: their share of b, amplified by 1/delta in rounding, moves x by up to 1e-3 of its
+size (the residual by 1e-7 of its own); where b is consistent, x agrees with lstsq to 1e-13.
+What this cannot resolve is a pose within s^2 < delta of a singular one (s below 1e-6 of the
+largest, where lstsq resolves 1e-13): there the corrections stop before the minimum-norm
+answer. scipy has no sparse rank-revealing QR, which would give the same without them.
 """
 
 from __future__ import annotations
@@ -20,9 +22,10 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import NDArray
 
+from ..engine.interrupts import off_main_thread
 from .jacobian import Jacobian
 
-REGULARISATION = 1e-9  # delta, of the largest diagonal entry of Phi_q Phi_q^T
+REGULARISATION = 1e-12  # delta, of the largest diagonal entry of Phi_q Phi_q^T
 CORRECTIONS = 50  # at most, after the first solution
 SETTLED = 1e-15  # a correction this share of the solution's size ends the iteration
 
@@ -47,11 +50,14 @@ def sparse_least_norm(jacobian: Jacobian, b: NDArray[np.float64]) -> NDArray[np.
     cq = jacobian.csr()
     gram = (cq @ cq.T).tocsc()
     shift = REGULARISATION * max(float(gram.diagonal().max()), np.finfo(float).tiny)
-    factor = splu(
-        gram + shift * identity(jacobian.rows, format="csc"),
-        permc_spec="MMD_AT_PLUS_A",  # a symmetric ordering, diagonal pivots: definite
-        diag_pivot_thresh=0.0,
-        options={"SymmetricMode": True},
+    shifted = gram + shift * identity(jacobian.rows, format="csc")
+    factor = off_main_thread(  # a Ctrl-C is answered during a long one
+        lambda: splu(
+            shifted,
+            permc_spec="MMD_AT_PLUS_A",  # a symmetric ordering, diagonal pivots: definite
+            diag_pivot_thresh=0.0,
+            options={"SymmetricMode": True},
+        )
     )
     residual, last = b, np.inf
     for _ in range(1 + CORRECTIONS):

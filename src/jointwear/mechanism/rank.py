@@ -20,11 +20,14 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import NDArray
 
+from ..engine.interrupts import off_main_thread
 from .blocks import row_blocks
 from .jacobian import Jacobian
 
 RANK_TOLERANCE = 1e-9  # of the largest singular value, or absolute below 1
 INVOLVED = 1e-6  # share in the left null space of a row involved in a dependence
+INLINE_SVD = 10**6  # an SVD of a stack this size times its matrices' smaller side (a few
+# ms) or less runs on the calling thread; a larger one on a worker (interrupts.off_main_thread)
 
 
 class Dependence(NamedTuple):
@@ -90,7 +93,10 @@ def _svd_dependence(stack: NDArray[np.float64]) -> tuple[NDArray, NDArray]:
         return np.zeros(count, dtype=np.int64), np.zeros((count, 0), dtype=bool)
     if columns == 0:
         return np.zeros(count, dtype=np.int64), np.ones((count, rows), dtype=bool)
-    u, sv, _ = np.linalg.svd(stack)
+    if stack.size * min(rows, columns) > INLINE_SVD:  # a Ctrl-C is answered during a long one
+        u, sv, _ = off_main_thread(lambda: np.linalg.svd(stack))
+    else:
+        u, sv, _ = np.linalg.svd(stack)
     tolerance = RANK_TOLERANCE * np.maximum(1.0, sv[:, :1])
     padded = np.concatenate([sv, np.zeros((count, rows - sv.shape[1]))], axis=1)
     null = padded <= tolerance  # (count, rows): the left singular vectors of the null space
