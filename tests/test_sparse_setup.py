@@ -21,9 +21,9 @@ from hypothesis import strategies as st
 from mechanisms import bar, chain, parallelogram, pin
 
 import jointwear as jw
-from jointwear.engine.interrupts import off_main_thread
 from jointwear.mechanism import jacobian as jacobian_module
 from jointwear.mechanism.assembly import assemble
+from jointwear.mechanism.background import off_main_thread
 from jointwear.mechanism.blocks import row_blocks
 from jointwear.mechanism.jacobian import evaluate
 from jointwear.mechanism.least_norm import sparse_least_norm

@@ -6,11 +6,8 @@ import os
 import signal
 import sys
 import threading
-from collections.abc import Callable, Iterator
+from collections.abc import Iterator
 from contextlib import contextmanager
-from typing import TypeVar
-
-T = TypeVar("T")
 
 _open: tuple[int, list[bool]] | None = None  # (process id, flag) of the outermost open block
 _cut_short = False  # an interrupt raised inside an interruptible block (see cut_short)
@@ -87,37 +84,6 @@ def interruptible() -> Iterator[None]:
 
 def _quiet(unraisable: object) -> None:
     """An ``sys.unraisablehook`` that says nothing."""
-
-
-def off_main_thread(work: Callable[[], T]) -> T:
-    """``work()`` on a worker thread while the main thread waits, answering signals.
-
-    Python runs a signal handler on the main thread between bytecodes: through a long call
-    into LAPACK or SuperLU (a factorisation in the set-up) a Ctrl-C would wait for it to
-    return. Those release the GIL, so the work runs on a daemon thread instead and the main
-    thread waits on a lock, which a signal interrupts at once: a handler's
-    ``KeyboardInterrupt`` comes out here, and the work, abandoned, ends on its own (or with
-    the process). Off the main thread, ``work()`` is simply called.
-    """
-    if threading.current_thread() is not threading.main_thread():
-        return work()
-    outcome: list = []
-    done = threading.Event()
-
-    def run() -> None:
-        try:
-            outcome.append((True, work()))
-        except BaseException as error:  # re-raised on the main thread
-            outcome.append((False, error))
-        finally:
-            done.set()
-
-    threading.Thread(target=run, name="jointwear-set-up", daemon=True).start()
-    done.wait()
-    finished, value = outcome[0]
-    if not finished:
-        raise value
-    return value
 
 
 def redeliver_lost_interrupts() -> None:

@@ -22,7 +22,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import NDArray
 
-from ..engine.interrupts import off_main_thread
+from .background import off_main_thread
 from .jacobian import Jacobian
 
 REGULARISATION = 1e-12  # delta, of the largest diagonal entry of Phi_q Phi_q^T

@@ -20,7 +20,7 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import NDArray
 
-from ..engine.interrupts import off_main_thread
+from .background import off_main_thread
 from .blocks import row_blocks
 from .jacobian import Jacobian
 
