@@ -4,7 +4,8 @@ Newton-Raphson on Phi(q, t0) = 0 from the model's pose guess, each correction th
 minimum-norm solution of Phi_q dq = -Phi (so coordinates the constraints leave free stay at
 their guessed values); then the velocities closest to the guessed ones that satisfy
 Phi_q q' = -Phi_t. Nikravesh (1988), ch. 4 and 5; paper sec. 6 ("initial conditions ... from a
-kinematic analysis ... in which all the joints are assumed to be ideal").
+kinematic analysis ... in which all the joints are assumed to be ideal"). The solves
+(``least_norm``) and the rank (``rank``) cost time linear in the bodies of a large mechanism.
 """
 
 from __future__ import annotations

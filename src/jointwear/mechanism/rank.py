@@ -1,16 +1,19 @@
 """The rank of the constraint Jacobian, and which equations depend on others.
 
 The numerical rank counts the singular values above ``RANK_TOLERANCE`` times the largest (at
-least 1); the rows involved in a dependence are those with a share above 1e-6 in the left
-singular vectors of the others (the left null space: the self-stresses, reactions that could
-grow without moving anything). A small Jacobian (``Jacobian.small``) is decomposed whole by
-LAPACK's SVD. A larger one block by block (``blocks.py``): every row's constraint is unchanged
-by moving the bodies it joins together as one rigid body, unless it holds one to the ground,
-so a self-stress in a block that a body cuts off from the ground is balanced on that body by
-the block alone; the left null space is the sum of the blocks' own, and the rank the sum of
-the blocks' ranks, each block's from the SVD of its rows in its bodies' coordinates. A chain's
-blocks are its single bars, a four-bar's its loop: the cost grows with the rows and the cube
-of the largest loop system, not of the whole mechanism. The tolerance is then each block's.
+least 1); the rows involved in a dependence are those with a share above ``INVOLVED`` in the
+left singular vectors of the others (the left null space: self-stresses, reactions that
+could grow without moving anything). A small Jacobian (``Jacobian.small``) is decomposed
+whole by LAPACK's SVD. A larger one block by block (``blocks.py``): moving the bodies a row
+joins together, as one rigid body, keeps its constraint met at a pose where it holds, so
+there the row is orthogonal to such motions, unless it holds a body to the ground. A
+self-stress is then balanced within each block that a body cuts off from the ground, on
+that body too: the left null space is the sum of the blocks' own, and the rank the sum of
+the blocks' ranks, each from the SVD of the block's rows in its bodies' coordinates (a
+body's three columns). That holds at an assembled pose, where the set-up asks, to the
+assembly's tolerance; the tolerance is then each block's. A chain's blocks are its single
+bars, a four-bar's is its loop: the cost grows with the rows and with the cube of the
+largest loop system, not of the whole mechanism.
 """
 
 from __future__ import annotations
