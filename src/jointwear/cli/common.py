@@ -95,13 +95,13 @@ def keep_whole(table: Table, *numbers: int) -> Table:
     narrow column showed as "1.224…", which reads as 1.224. Each column of numbers gets a
     fixed width, that of its widest cell (or header word), which rich never narrows; text
     (headers, names) folds onto more lines instead. ``print_table`` widens what still does
-    not fit.
+    not fit. A cell of several lines is as wide as its widest.
     """
     for index, column in enumerate(table.columns):
         column.overflow = "fold"
         if index in numbers:
-            words = [_plain(cell) for cell in column.cells] + _plain(column.header).split()
-            column.width = max(cell_len(word) for word in words)
+            words = [line for cell in column.cells for line in _plain(cell).splitlines()]
+            column.width = max(cell_len(word) for word in [*words, *_plain(column.header).split()])
     return table
 
 

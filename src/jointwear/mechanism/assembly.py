@@ -4,7 +4,8 @@ Newton-Raphson on Phi(q, t0) = 0 from the model's pose guess, each correction th
 minimum-norm solution of Phi_q dq = -Phi (so coordinates the constraints leave free stay at
 their guessed values); then the velocities closest to the guessed ones that satisfy
 Phi_q q' = -Phi_t. Nikravesh (1988), ch. 4 and 5; paper sec. 6 ("initial conditions ... from a
-kinematic analysis ... in which all the joints are assumed to be ideal").
+kinematic analysis ... in which all the joints are assumed to be ideal"). The solves
+(``least_norm``) and the rank (``rank``) cost time linear in the bodies of a large mechanism.
 """
 
 from __future__ import annotations
@@ -15,14 +16,13 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..joints import BY_NAME
-from ..kernels.constraints import evaluate_constraints
-from ..kernels.structs import to_struct
 from ..model import Model, ModelError
-from .pattern import ENTRIES
-from .system import System, constraint_count, initial_guess, joint_row_count
+from .jacobian import evaluate
+from .least_norm import least_norm
+from .rank import Dependence, dependence
+from .system import System, initial_guess, joint_row_count
 
 MAX_ITERATIONS = 50
-RANK_TOLERANCE = 1e-9
 VELOCITY_RATE = 1.0  # velocity equations are met to the position tolerance per second [1/s]
 
 
@@ -49,43 +49,14 @@ def row_labels(model: Model) -> list[str]:
     return labels
 
 
-def evaluate(
-    system: System, q: NDArray, qd: NDArray, t: float = 0.0
-) -> tuple[NDArray, NDArray, NDArray]:
-    """Phi, the dense Jacobian Phi_q and Phi_t at (q, q') and time t [s]."""
-    mech = system.mechanism
-    m = constraint_count(mech)
-    phi, gamma, phi_t = np.zeros(m), np.zeros(m), np.zeros(m)
-    entries = np.zeros((m, ENTRIES))
-    # as a struct, the one specialization the step loop compiles too (kernels/structs.py)
-    evaluate_constraints(t, q, qd, to_struct(mech), phi, entries, gamma, phi_t)
-    cq = np.zeros((m, q.shape[0]))
-    rows, slots = np.nonzero(mech.row_coord >= 0)
-    cq[rows, mech.row_coord[rows, slots]] = entries[rows, slots]
-    return phi, cq, phi_t
-
-
-def _rank(matrix: NDArray) -> tuple[int, NDArray, NDArray]:
-    """Numerical rank, singular values and left singular vectors of a (rows x n) matrix."""
-    if matrix.shape[0] == 0:
-        return 0, np.zeros(0), np.zeros((0, 0))
-    u, sv, _ = np.linalg.svd(matrix)
-    scale = max(1.0, float(sv[0]) if sv.size else 1.0)
-    return int(np.sum(sv > RANK_TOLERANCE * scale)), sv, u
-
-
-def _redundancy_message(cq: NDArray, labels: list[str]) -> str:
-    rank, sv, u = _rank(cq)
-    m = cq.shape[0]
-    padded = np.concatenate([sv, np.zeros(m - sv.size)])
-    weights = np.abs(u[:, padded <= RANK_TOLERANCE * max(1.0, float(sv[0]))]).sum(axis=1)
-    involved = [labels[i] for i in np.flatnonzero(weights > 1e-6)]
+def _redundancy_message(found: Dependence, labels: list[str]) -> str:
+    involved = [labels[i] for i in np.flatnonzero(found.involved)]
     return (
-        f"constraints: the Jacobian has rank {rank} for {m} equations (redundant or singular); "
-        f"the dependent equations involve {', '.join(involved)}; the Baumgarte formulation "
-        "needs independent constraints: use solver.formulation = 'augmented_lagrangian', "
-        "remove a redundant joint or driver, or move the initial pose away from a singular "
-        "(dead-centre) position"
+        f"constraints: the Jacobian has rank {found.rank} for {len(labels)} equations (redundant "
+        f"or singular); the dependent equations involve {', '.join(involved)}; the Baumgarte "
+        "formulation needs independent constraints: use solver.formulation = "
+        "'augmented_lagrangian', remove a redundant joint or driver, or move the initial pose "
+        "away from a singular (dead-centre) position"
     )
 
 
@@ -93,7 +64,7 @@ def redundant_equations(system: System, y0: NDArray[np.float64]) -> int:
     """Constraint equations of ``system`` that depend on others at the state y0."""
     n = y0.shape[0] // 2
     _, cq, _ = evaluate(system, y0[:n], y0[n:])
-    return cq.shape[0] - _rank(cq)[0]
+    return cq.rows - dependence(cq).rank
 
 
 def _finite(matrix: np.ndarray) -> bool:
@@ -117,7 +88,7 @@ def assemble(model: Model, system: System, tolerance: float | None = None) -> As
     phi, cq, phi_t = evaluate(system, q, qd)
     iterations = 0
     while not np.max(np.abs(phi), initial=0.0) <= tol:  # NaN included
-        if iterations == MAX_ITERATIONS or not (np.all(np.isfinite(phi)) and _finite(cq)):
+        if iterations == MAX_ITERATIONS or not (np.all(np.isfinite(phi)) and _finite(cq.entries)):
             worst = np.argsort(-np.abs(phi))[:3]
             unmet = "; ".join(f"{labels[i]} off by {abs(phi[i]):.3g}" for i in worst)
             raise ModelError(
@@ -126,7 +97,7 @@ def assemble(model: Model, system: System, tolerance: float | None = None) -> As
                     "check the body points and lengths, and the initial positions and angles"
                 ]
             )
-        q += np.linalg.lstsq(cq, -phi, rcond=None)[0]
+        q += least_norm(cq, -phi)
         phi, cq, phi_t = evaluate(system, q, qd)
         iterations += 1
     not_finite = [labels[i] for i in np.flatnonzero(~np.isfinite(phi_t))]
@@ -137,11 +108,12 @@ def assemble(model: Model, system: System, tolerance: float | None = None) -> As
                 f"{', '.join(not_finite)} overflows; check the drivers' amplitudes and frequencies"
             ]
         )
-    rank, _, _ = _rank(cq)
-    if rank < cq.shape[0] and model.solver.formulation == "baumgarte":
-        raise ModelError([_redundancy_message(cq, labels)])
-    qd -= np.linalg.lstsq(cq, cq @ qd + phi_t, rcond=None)[0]
-    velocity_residual = np.abs(cq @ qd + phi_t)
+    found = dependence(cq)
+    rank = found.rank
+    if rank < cq.rows and model.solver.formulation == "baumgarte":
+        raise ModelError([_redundancy_message(found, labels)])
+    qd -= least_norm(cq, cq.dot(qd) + phi_t)
+    velocity_residual = np.abs(cq.dot(qd) + phi_t)
     if np.max(velocity_residual, initial=0.0) > tol * VELOCITY_RATE:
         worst = np.argsort(-velocity_residual)[:3]
         unmet = "; ".join(f"{labels[i]} off by {velocity_residual[i]:.3g}" for i in worst)
@@ -158,6 +130,6 @@ def assemble(model: Model, system: System, tolerance: float | None = None) -> As
         iterations=iterations,
         residual=float(np.max(np.abs(phi), initial=0.0)),
         dof=n - rank,
-        redundant=cq.shape[0] - rank,
-        dof_without_drivers=n - _rank(cq[:joint_rows])[0],
+        redundant=cq.rows - rank,
+        dof_without_drivers=n - dependence(cq.top(joint_rows)).rank,
     )

@@ -18,7 +18,9 @@ from numpy.typing import NDArray
 
 from ..model import Model
 from ..model.functions import period
-from .assembly import Assembly, evaluate
+from .assembly import Assembly
+from .jacobian import evaluate
+from .least_norm import least_norm
 from .system import System
 
 SAMPLES_PER_CYCLE = 360  # poses solved per driver cycle (a degree of a crank's turn)
@@ -91,14 +93,14 @@ def _pose(system: System, q: NDArray, t: float, t_next: float, gap: float) -> ND
     """
     zero = np.zeros_like(q)
     _, cq, phi_t = evaluate(system, q, zero, t)
-    guess = q - np.linalg.lstsq(cq, phi_t, rcond=None)[0] * (t_next - t)
+    guess = q - least_norm(cq, phi_t) * (t_next - t)
     residual = math.inf
     for _ in range(NEWTON_ITERATIONS):
         phi, cq, _ = evaluate(system, guess, zero, t_next)
         residual = float(np.max(np.abs(phi)))
         if not math.isfinite(residual):
             return None
-        step = np.linalg.lstsq(cq, -phi, rcond=None)[0]
+        step = least_norm(cq, -phi)
         if not np.all(np.isfinite(step)):
             return None
         guess = guess + step

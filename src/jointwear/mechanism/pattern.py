@@ -7,7 +7,8 @@ M + Phi_q^T W Phi_q (coordinates x coordinates, augmented Lagrangian), both in e
 storage (``kernels.linalg``). Their envelopes are narrow when bodies joined to each other are
 numbered close together: the bodies are put in reverse Cuthill-McKee order of the graph of
 joints (Cuthill and McKee 1969; George and Liu 1981, sec. 4.3), a handful of lines written
-here so that the runtime needs no scipy. A chain or a tree then costs linear time.
+here so that the runtime needs no scipy. A chain or a tree then costs linear time, and so
+does building the tables (array operations, no loop over rows).
 """
 
 from __future__ import annotations
@@ -55,96 +56,106 @@ def _cuthill_mckee(neighbours: list[set[int]]) -> list[int]:
     return order[::-1]
 
 
-def _envelope(position: NDArray[np.int64], couples: list[set[int]]) -> tuple[NDArray, NDArray]:
-    """First column and row starts of the envelope; couples[v]: items coupled with v."""
-    size = position.shape[0]
-    first = np.empty(size, dtype=np.int64)
-    for item in range(size):
-        first[position[item]] = min(position[c] for c in couples[item] | {item})
-    ptr = np.zeros(size + 1, dtype=np.int64)
-    ptr[1:] = np.cumsum(np.arange(size) - first + 1)
+def _envelope(position: NDArray[np.int64], reach: NDArray[np.int64]) -> tuple[NDArray, NDArray]:
+    """First column and row starts of the envelope; reach[v]: the lowest position coupled with v."""
+    first = np.empty(position.shape[0], dtype=np.int64)
+    first[position] = np.minimum(reach, position)
+    ptr = np.zeros(position.shape[0] + 1, dtype=np.int64)
+    ptr[1:] = np.cumsum(np.arange(position.shape[0]) - first + 1)
     return first, ptr
 
 
-def _index(first: NDArray, ptr: NDArray, i: int, j: int) -> int:
-    """Flat envelope index of entry (i, j), i >= j."""
-    return int(ptr[i] + j - first[i])
+def _lowest(position: NDArray[np.int64], pairs: NDArray[np.int64]) -> NDArray[np.int64]:
+    """Per node, the lowest ``position`` among its own and those of the nodes it pairs with.
+
+    ``pairs`` (m, 2): nodes paired by each row, -1 for the ground (no position).
+    """
+    size = position.shape[0]
+    lowest = np.append(position, 0)  # the last: the ground's, never read
+    placed = np.append(position, np.iinfo(np.int64).max)
+    both = np.where(pairs >= 0, pairs, size)
+    np.minimum.at(lowest, both[:, 0], placed[both[:, 1]])
+    np.minimum.at(lowest, both[:, 1], placed[both[:, 0]])
+    return lowest[:size]
 
 
 def build_pattern(row_bodies: NDArray[np.int64], n_bodies: int) -> Pattern:
     """The index tables for constraint rows joining row_bodies (m, 2) (-1: the ground)."""
     m = row_bodies.shape[0]
-    n = 3 * n_bodies
-    row_coord = np.full((m, ENTRIES), -1, dtype=np.int64)
-    for r, pair in enumerate(row_bodies):
-        if pair[0] >= 0 and pair[0] == pair[1]:
-            raise ValueError(f"constraint row {r} joins body {pair[0]} to itself")
-        for side, body in enumerate(pair):
-            if body >= 0:
-                row_coord[r, 3 * side : 3 * side + 3] = 3 * body + np.arange(3)
+    looped = np.flatnonzero((row_bodies[:, 0] >= 0) & (row_bodies[:, 0] == row_bodies[:, 1]))
+    if looped.size:
+        r = int(looped[0])
+        raise ValueError(f"constraint row {r} joins body {row_bodies[r, 0]} to itself")
+    body_of_entry = np.repeat(row_bodies, 3, axis=1)  # (m, ENTRIES)
+    row_coord = np.where(body_of_entry >= 0, 3 * body_of_entry + np.tile(np.arange(3), 2), -1)
 
     joined = [set() for _ in range(n_bodies)]
-    for i, j in row_bodies:
-        if i >= 0 and j >= 0:
-            joined[i].add(int(j))
-            joined[j].add(int(i))
+    for i, j in row_bodies[(row_bodies >= 0).all(axis=1)].tolist():
+        joined[i].add(j)
+        joined[j].add(i)
     body_position = np.empty(n_bodies, dtype=np.int64)
     body_position[_cuthill_mckee(joined)] = np.arange(n_bodies)
 
+    # a coordinate couples with the coordinates of its body and of the bodies joined to it
     coord_order = (3 * body_position[:, None] + np.arange(3)).ravel()
-    coord_couples = [
-        {3 * b + k for b in joined[c // 3] | {c // 3} for k in range(3)} for c in range(n)
-    ]
-    coord_first, coord_ptr = _envelope(coord_order, coord_couples)
-    row_entry_pairs = np.full((m, ENTRIES * ENTRIES), -1, dtype=np.int64)
-    for r in range(m):
-        for e1 in range(ENTRIES):
-            for e2 in range(ENTRIES):
-                c1, c2 = row_coord[r, e1], row_coord[r, e2]
-                if c1 >= 0 and c2 >= 0 and coord_order[c1] >= coord_order[c2]:
-                    row_entry_pairs[r, ENTRIES * e1 + e2] = _index(
-                        coord_first, coord_ptr, coord_order[c1], coord_order[c2]
-                    )
+    body_reach = _lowest(body_position, row_bodies)
+    coord_first, coord_ptr = _envelope(coord_order, np.repeat(3 * body_reach, 3))
+    row_entry_pairs = _entry_pairs(row_coord, coord_order, coord_first, coord_ptr)
 
-    key = [
-        (
-            min(body_position[b] for b in pair if b >= 0),
-            max(body_position[b] for b in pair if b >= 0),
-        )
-        if (pair >= 0).any()
-        else (n_bodies, n_bodies)
-        for pair in row_bodies
-    ]
+    # rows in order of their bodies' positions (rows on the ground alone last); a row couples
+    # with every row sharing a body with it
+    placed = np.where(row_bodies >= 0, body_position[row_bodies], n_bodies)
+    key_low, key_high = placed.min(axis=1), np.where(row_bodies >= 0, placed, -1).max(axis=1)
+    key_high = np.where(key_high < 0, n_bodies, key_high)
     row_order = np.empty(m, dtype=np.int64)
-    row_order[sorted(range(m), key=lambda r: key[r])] = np.arange(m)
-    touching: list[list[tuple[int, int]]] = [[] for _ in range(n)]  # (row, entry) per coord
-    for r in range(m):
-        for e in range(ENTRIES):
-            if row_coord[r, e] >= 0:
-                touching[row_coord[r, e]].append((r, e))
-    row_couples = [set() for _ in range(m)]
-    for entries in touching:
-        for r1, _ in entries:
-            row_couples[r1].update(r2 for r2, _ in entries)
-    row_first, row_ptr = _envelope(row_order, row_couples)
-    pairs = [
-        (_index(row_first, row_ptr, row_order[r1], row_order[r2]), r1, e1, r2, e2, coord)
-        for coord, entries in enumerate(touching)
-        for r1, e1 in entries
-        for r2, e2 in entries
-        if row_order[r1] >= row_order[r2]
-    ]
+    row_order[np.lexsort((key_high, key_low))] = np.arange(m)
+    lowest_row = np.full(n_bodies + 1, np.iinfo(np.int64).max, dtype=np.int64)
+    np.minimum.at(lowest_row, np.where(row_bodies >= 0, row_bodies, n_bodies).ravel(),
+                  np.repeat(row_order, 2))  # fmt: skip
+    row_reach = np.where(row_bodies >= 0, lowest_row[row_bodies], row_order[:, None]).min(axis=1)
+    row_first, row_ptr = _envelope(row_order, row_reach)
     return Pattern(
         row_coord=row_coord,
         row_order=row_order,
         row_first=row_first,
         row_ptr=row_ptr,
-        row_pairs=np.array(pairs, dtype=np.int64).reshape(len(pairs), 6),
+        row_pairs=_schur_pairs(row_coord, row_order, row_first, row_ptr),
         coord_order=coord_order,
         coord_first=coord_first,
         coord_ptr=coord_ptr,
-        coord_diagonal=np.array(
-            [_index(coord_first, coord_ptr, i, i) for i in coord_order], dtype=np.int64
-        ),
+        coord_diagonal=coord_ptr[coord_order] + coord_order - coord_first[coord_order],
         row_entry_pairs=row_entry_pairs,
     )
+
+
+def _entry_pairs(row_coord: NDArray, order: NDArray, first: NDArray, ptr: NDArray) -> NDArray:
+    """(m, 36) mass-envelope index of each row's entry pair (e1, e2), e1 at or below e2; -1."""
+    m = row_coord.shape[0]
+    placed = np.where(row_coord >= 0, order[row_coord], -1)
+    i, j = placed[:, :, None], placed[:, None, :]  # the entries e1 (rows), e2 (columns)
+    inside = (i >= 0) & (j >= 0) & (i >= j)
+    safe = np.where(inside, i, 0)
+    index = ptr[safe] + np.where(inside, j, 0) - first[safe]
+    return np.where(inside, index, -1).reshape(m, ENTRIES * ENTRIES)
+
+
+def _schur_pairs(row_coord: NDArray, order: NDArray, first: NDArray, ptr: NDArray) -> NDArray:
+    """(p, 6) Schur terms: envelope index, r1, e1, r2, e2, coordinate.
+
+    One for every two entries (r1, e1), (r2, e2) in one coordinate, r1 at or below r2 in the
+    envelope's order; by coordinate, then r1 and e1, then r2 and e2.
+    """
+    rows, entries = np.nonzero(row_coord >= 0)  # by row, then entry
+    coords = row_coord[rows, entries]
+    by_coord = np.argsort(coords, kind="stable")
+    rows, entries, coords = rows[by_coord], entries[by_coord], coords[by_coord]
+    start = np.searchsorted(coords, coords)  # each entry's group: the entries of its coordinate
+    count = np.searchsorted(coords, coords, side="right") - start
+    one = np.repeat(np.arange(coords.size), count)
+    other = start[one] + np.arange(one.size) - np.repeat(np.cumsum(count) - count, count)
+    keep = order[rows[one]] >= order[rows[other]]
+    one, other = one[keep], other[keep]
+    i, j = order[rows[one]], order[rows[other]]
+    return np.column_stack(
+        [ptr[i] + j - first[i], rows[one], entries[one], rows[other], entries[other], coords[one]]
+    ).astype(np.int64)

@@ -202,7 +202,11 @@ class _Poses:
         self.index = {b.name: i for i, b in enumerate(model.bodies)} | {"ground": GROUND}
         self.pose = {b.name: (b.position[0], b.position[1], b.angle) for b in model.bodies}
         self.pose["ground"] = (0.0, 0.0, 0.0)
-        self.local = model.point
+        self.points = {b.name: b.points for b in model.bodies} | {"ground": model.ground.points}
+
+    def local(self, body: str, point: str) -> tuple[float, float]:
+        """Point ``point`` of ``body`` [m] in its frame (``Model.point``, by name at once)."""
+        return self.points[body][point]
 
     def angle(self, body: str) -> float:
         """Initial angle of ``body`` [rad]."""

@@ -43,12 +43,14 @@ def reference_problems(
 
     points = {"ground": ground.points} | {body.name: body.points for body in bodies}
     moving = list(dict.fromkeys(body.name for body in bodies))
+    found = set(moving)
 
     def body(path: str, name: str, allow_ground: bool = True) -> bool:
+        if name in found or (allow_ground and name == "ground"):
+            return True
         known = ["ground", *moving] if allow_ground else moving
-        if name not in known:
-            problems.append(f"{path}: {unknown('body', name, known, 'bodies')}")
-        return name in known
+        problems.append(f"{path}: {unknown('body', name, known, 'bodies')}")
+        return False
 
     def point(path: str, body_name: str, name: str) -> None:
         known = list(points[body_name])
