@@ -108,7 +108,12 @@ def main() -> None:
         "--moments", type=float, nargs="+", default=MOMENTS, help="[s] after check starts"
     )
     args = parser.parse_args()
-    folder = Path(tempfile.mkdtemp(prefix="setup_scaling_"))
+    with tempfile.TemporaryDirectory(prefix="setup_scaling_") as folder:
+        measure(args, Path(folder))
+
+
+def measure(args: argparse.Namespace, folder: Path) -> None:
+    """Write the chains into ``folder``, measure them and print the tables."""
     paths = {}
     for n in args.sizes:
         paths[n] = chain_model(n, 45.0, None, None, 1e-3).to_toml(folder / f"chain_{n}.toml")

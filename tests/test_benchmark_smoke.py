@@ -58,6 +58,14 @@ def test_chain_benchmark_prints_its_table():
     assert all(row.split(" | ")[4] == "1001" for row in rows)
 
 
+def test_setup_scaling_benchmark_prints_its_tables():
+    # a chain set up dense (3 bars) and one sparse (45 bars: above 120 coordinates)
+    rows = _table_rows("setup_scaling.py", "--sizes", "3", "45", "--signal", "--moments", "0.5")
+    assert [row.split(" | ")[0] for row in rows[:2]] == ["| 3", "| 45"]
+    assert all(len(row.split(" | ")) == 5 for row in rows[:2])  # N and four measures
+    assert rows[2].startswith("| sent after") and rows[3].startswith("| 0.5 | ")
+
+
 def _table_rows(script: str, *args: str) -> list[str]:
     """Run a benchmark script; the rows of the markdown table it prints, header left out."""
     done = subprocess.run(
