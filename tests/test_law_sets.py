@@ -46,6 +46,17 @@ def test_laws_registered_from_python_make_one_law_set_whatever_their_codes():
     assert not typeof(first).with_user_laws("normal_law")
 
 
+def test_a_law_set_returned_from_compiled_code_is_the_same():
+    """A table passed by value (JOINTWEAR_PLAIN_NUMBA) comes back with its law set."""
+    from numba import njit
+
+    laws = kind_laws(np.zeros((2, journal.N_INTS), dtype=np.int64), journal.LAW_COLUMNS, None)
+    laws = laws._replace(used=journal_law_set(lubrication=3, friction_law=USER_CODE))
+    back = njit(lambda table: table)(laws)
+    assert back.used == laws.used
+    np.testing.assert_array_equal(back.address, laws.address)
+
+
 def test_a_law_sets_type_survives_pickling_for_the_cache_index():
     import pickle
 

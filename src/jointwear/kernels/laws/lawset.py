@@ -15,7 +15,7 @@ that models that differ only in them share one specialisation and its cache.
 from collections.abc import Iterable, Mapping
 
 from numba import types
-from numba.extending import NativeValue, models, register_model, typeof_impl, unbox
+from numba.extending import NativeValue, box, models, register_model, typeof_impl, unbox
 
 USER_CODE = 100  # law codes from here on are laws registered from Python
 
@@ -38,6 +38,13 @@ class LawSet:
                                                         >= USER_CODE else set())  # fmt: skip
             families.append((family, tuple(sorted(kept)), demand))
         self.families = tuple(families)
+
+    @classmethod
+    def of_families(cls, families: tuple) -> "LawSet":
+        """The law set whose ``families`` these are (as ``LawSetType`` holds them)."""
+        law_set = cls.__new__(cls)
+        law_set.families = families
+        return law_set
 
     def __repr__(self) -> str:
         return f"LawSet{self.families}"
@@ -87,3 +94,9 @@ register_model(LawSetType)(models.OpaqueModel)
 @unbox(LawSetType)
 def _unbox(typ: LawSetType, obj: object, c: object) -> NativeValue:
     return NativeValue(c.context.get_constant_null(typ))  # the type is all there is
+
+
+@box(LawSetType)
+def _box(typ: LawSetType, value: object, c: object) -> object:
+    """The same law set, rebuilt from the type (a named tuple returned to Python holds one)."""
+    return c.pyapi.unserialize(c.pyapi.serialize_object(LawSet.of_families(typ.families)))
