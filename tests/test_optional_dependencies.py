@@ -35,10 +35,13 @@ def _top_level(tree: ast.Module) -> set[ast.AST]:
     return {node for _, node in _imports(tree) if node not in inside}
 
 
-SCIPY_USERS = {  # the .mat writer, the interpolants of a table function, sampled studies, films
+SCIPY_USERS = {  # the .mat writer, table functions' interpolants, sampled studies, films, and
+    # the sparse set-up of large mechanisms
     SOURCE / "results" / "export.py",
     SOURCE / "film" / "reynolds.py",
     SOURCE / "mechanism" / "functions.py",
+    SOURCE / "mechanism" / "jacobian.py",
+    SOURCE / "mechanism" / "least_norm.py",
     *(SOURCE / "studies" / "sample" / f"{name}.py"
       for name in ("distributions", "design", "statistics", "sensitivity")),
 }  # fmt: skip

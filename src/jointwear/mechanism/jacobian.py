@@ -9,7 +9,7 @@ did); above, as a scipy CSR matrix (``least_norm``, ``rank``).
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, NamedTuple
+from typing import NamedTuple
 
 import numpy as np
 from numpy.typing import NDArray
@@ -18,9 +18,6 @@ from ..kernels.constraints import evaluate_constraints
 from ..kernels.structs import to_struct
 from .pattern import ENTRIES
 from .system import System, constraint_count
-
-if TYPE_CHECKING:
-    from scipy.sparse import csr_array
 
 DENSE_COLUMNS = 120  # coordinates (40 bodies) up to which the Jacobian is taken dense
 
@@ -59,7 +56,7 @@ class Jacobian(NamedTuple):
         matrix[rows, self.coord[rows, slots]] = self.entries[rows, slots]
         return matrix
 
-    def csr(self) -> csr_array:
+    def csr(self) -> object:
         """Phi_q as a scipy CSR array (duplicate entries summed)."""
         from scipy.sparse import csr_array
 
