@@ -39,7 +39,7 @@ from ..constraints import evaluate_constraints
 from ..jacobian import ENTRIES, add_transpose_product, norm, row_dot
 from ..linalg import envelope_factor, envelope_solve
 from . import shared_arrays
-from .schur import schur_multipliers
+from .schur import schur_factor, schur_multipliers, schur_solve
 
 MAX_ITERATIONS = 50  # iterations per evaluation
 UNSETTLED = 1e-3  # at MAX_ITERATIONS, residuals below this of the largest row's terms pass
@@ -64,9 +64,11 @@ class AugmentedScratch(NamedTuple):
     qdd: np.ndarray  # (n,) accelerations of the last iterate
     x_coords: np.ndarray  # (n,) a coordinate vector in envelope order
     lead: np.ndarray  # M + Phi_q^T W Phi_q in envelope storage, or its factor
-    evaluated: np.ndarray  # (1 + 2n,) time [s] and state the factor in lead belongs to
+    evaluated: np.ndarray  # (1 + 2n,) time [s] and state the factor below belongs to
+    by_schur: np.ndarray  # (1,) bool: that factor is schur's (else lead's)
     iterations: np.ndarray  # (1,) int64 iterations of the last evaluation (0: direct)
     schur: np.ndarray  # Phi_q M^-1 Phi_q^T in envelope storage, or its factor
+    z_rows: np.ndarray  # (m,) a row vector
     direct: bool  # an open tree of joints: lam from the Schur complement (``_direct``)
 
 
@@ -106,8 +108,10 @@ def make_scratch(n: int, m: int, mech: NamedTuple) -> AugmentedScratch:
         x_coords=np.zeros(n),
         lead=np.zeros(mech.coord_ptr[-1]),
         evaluated=np.full(1 + 2 * n, np.nan),
+        by_schur=np.zeros(1, dtype=np.bool_),
         iterations=np.zeros(1, dtype=np.int64),
         schur=np.zeros(mech.row_ptr[-1]),
+        z_rows=np.zeros(m),
         direct=open_tree(mech.row_coord, mech.redundant),
     )
 
@@ -219,7 +223,7 @@ def solve(wk, t, y, mech):
     """
     if wk.direct and _direct(wk, y, mech):
         wk.iterations[0] = 0
-        wk.evaluated[0] = np.nan  # no factor of the leading matrix at this state
+        _factored_at(wk, t, y, True)
         return True
     return _iterate(wk, t, y, mech)
 
@@ -271,9 +275,16 @@ def _iterate(wk, t, y, mech):
     wk.iterations[0] = k + 1
     if not settled and worst > UNSETTLED * largest:
         return False  # not near a singular position: a badly conditioned system
+    _factored_at(wk, t, y, False)
+    return True
+
+
+@njit(cache=True, no_cpython_wrapper=True)
+def _factored_at(wk, t, y, by_schur):
+    """Record that the factor of schur (by_schur) or of lead belongs to time t [s], state y."""
     wk.evaluated[0] = t
     wk.evaluated[1:] = y
-    return True
+    wk.by_schur[0] = by_schur
 
 
 @njit(cache=True, no_cpython_wrapper=True)
@@ -343,8 +354,33 @@ def _velocity_violation(mech, wk, qd):
 
 
 @njit(cache=True, no_cpython_wrapper=True)
+def _factor_projection(mech, wk):
+    """Factor the matrix the corrections solve with; False if neither can be factored.
+
+    An open tree of joints: the Schur complement (exact M-orthogonal corrections), else, or
+    where that is singular, the leading matrix.
+    """
+    wk.by_schur[0] = wk.direct and schur_factor(wk, mech)
+    return wk.by_schur[0] or _factor_lead(mech, wk)
+
+
+@njit(cache=True, no_cpython_wrapper=True)
 def _correct(mech, wk, v, violation):
-    """Add to v the M-orthogonal correction toward Phi_q dv = -violation (lead factored)."""
+    """Add to v the M-orthogonal correction toward Phi_q dv = -violation (factored).
+
+    With the Schur complement S: dv = -M^-1 Phi_q^T S^-1 violation. With the leading matrix:
+    (M + Phi_q^T W Phi_q) dv = -Phi_q^T W violation, the same as W grows.
+    """
+    if wk.by_schur[0]:
+        coef = wk.z_rows
+        coef[:] = violation
+        schur_solve(wk, mech, coef)
+        for r in range(coef.shape[0]):
+            for e in range(ENTRIES):
+                col = mech.row_coord[r, e]
+                if col >= 0:
+                    v[col] -= mech.inv_mass[col] * wk.cq[r, e] * coef[r]
+        return
     coef = wk.x_rows
     for r in range(coef.shape[0]):
         coef[r] = -wk.weight[r] * violation[r]
@@ -361,7 +397,7 @@ def project(wk, t, y, mech):
     Positions, then velocities, take M-orthogonal corrections until their violation is below
     the projection tolerance (the same number in m/s and rad/s for the velocities). The
     factor of the step's last evaluation serves all corrections when that was at y, as the
-    integrators' last evaluation is. Returns -1 if the leading matrix could not be factored.
+    integrators' last evaluation is. Returns -1 if no matrix could be factored.
     """
     n = mech.inv_mass.shape[0]
     q = y[:n]
@@ -376,7 +412,7 @@ def project(wk, t, y, mech):
         if violation <= tol:
             break
         if not factored:
-            if not _factor_lead(mech, wk):
+            if not _factor_projection(mech, wk):
                 return -1.0
             factored = True
         _correct(mech, wk, q, wk.phi)
@@ -387,7 +423,7 @@ def project(wk, t, y, mech):
         if _velocity_violation(mech, wk, qd) <= tol:  # the same number in m/s and rad/s
             break
         if not factored:
-            if not _factor_lead(mech, wk):
+            if not _factor_projection(mech, wk):
                 return -1.0
             factored = True
         _correct(mech, wk, qd, wk.x_rows)
