@@ -1,39 +1,41 @@
-"""How the cost of a run grows with the size of a mechanism: an N-link pendulum chain (issue 14).
+"""How a run's cost grows with the size of a mechanism: an N-link pendulum chain (issues 14, 32).
 
 The chain: N uniform bars, each 1 kg and 0.1 m long (inertia m l^2 / 12 about the centre),
 the first pinned to the ground at the origin, each next one pinned to the previous bar's free
 end, all ideal revolute joints, under gravity (9.81 m/s^2, -y). Released from rest as one
 straight line 45 degrees below the horizontal (``--angle``), and simulated for 1 s with the
 default solver settings but an output row every 1 ms (``--output-interval``), one per
-maximum step, as in the issue's measurements (rows there cost a third of the time at N = 80).
-``--integrator`` and ``--formulation`` change only those keys; when not given they are left
-out of the model.
+maximum step, as in the issues' measurements. ``--integrator`` and ``--formulation`` change
+only those keys; when not given they are left out of the model.
 
-For each N: one warm-up run (it compiles the kernels), then ``--repeats`` timed runs; the wall
-time is the median of ``jw.simulate`` alone (assembly and result tables included, model
-building not). Printed as a markdown table: N, wall, accepted steps, right-hand-side (RHS)
-evaluations (the run statistics' ``rhs_evaluations``, which count those of output rows too:
-a row costs one unless a step ends on its time), output rows, microseconds per RHS
-evaluation (wall over the evaluations), and the tip (the last bar's free end) at
-t = 1 s, to compare formulations; then the growth exponent, the least-squares slope of
-log(wall) against log(N) over the sizes from 10 to 80.
+Each size runs in a child process of its own, so that its peak memory is its own: one run of
+a two-bar chain loads the compiled kernels, then ``--repeats`` timed runs of the N-bar one.
+Printed as a markdown table, medians: N; simulation time (the run statistics'
+``simulation_wall_s``: the step loop, without set-up and results); accepted steps;
+right-hand-side (RHS) evaluations (those of output rows included: a row costs one unless a
+step ends on its time); output rows; simulation microseconds per accepted step and body;
+set-up time (the rest of ``jw.simulate``: assembly, the lock-up check, the results tables);
+the child's peak resident memory; and the tip (the last bar's free end) at t = 1 s, to
+compare formulations. Then each size's cost per step and body against N = 80's (or the
+first size's): flat when the step loop costs linear time.
 
 Usage (from the repository root, after ``make install``)::
 
-    .venv/bin/python benchmarks/chain.py                          # N = 2 ... 80, minutes
+    .venv/bin/python benchmarks/chain.py                          # N = 10 ... 2,000, minutes
     .venv/bin/python benchmarks/chain.py --sizes 2 5 --repeats 1  # smoke
-    .venv/bin/python benchmarks/chain.py --formulation augmented_lagrangian --integrator dopri5
+    .venv/bin/python benchmarks/chain.py --formulation baumgarte --integrator dopri5
 """
 
 from __future__ import annotations
 
 import argparse
+import json
 import math
+import resource
 import statistics
+import subprocess
 import sys
 import time
-
-import numpy as np
 
 import jointwear as jw
 from jointwear.model import Model, parse_model
@@ -42,8 +44,8 @@ MASS, LENGTH = 1.0, 0.1  # per bar [kg], [m]
 GRAVITY = 9.81  # [m/s^2]
 T_END = 1.0  # [s]
 OUTPUT_INTERVAL = 1e-3  # [s]
-SIZES = (2, 5, 10, 20, 40, 80)
-GROWTH_RANGE = (10, 80)  # the sizes the growth exponent is fitted over
+SIZES = (10, 80, 320, 640, 2000)
+REFERENCE_SIZE = 80  # the size the others' cost per step and body is compared with
 
 
 def chain_model(
@@ -95,39 +97,43 @@ def tip(results: jw.Results, n: int) -> tuple[float, float, float]:
     return last["time"], x + half * math.cos(phi), y + half * math.sin(phi)
 
 
-def measure(model: Model, n: int, repeats: int) -> dict:
-    """Warm up once, then the median wall time of ``repeats`` runs and the last run's figures."""
-    jw.simulate(model)
-    walls = []
-    for _ in range(repeats):
+def measure(n: int, args: argparse.Namespace) -> dict:
+    """Load the kernels on a two-bar chain, then time ``args.repeats`` runs of the n-bar one."""
+    jw.simulate(chain_model(2, args.angle, args.integrator, args.formulation, args.output_interval))
+    model = chain_model(n, args.angle, args.integrator, args.formulation, args.output_interval)
+    walls, simulations = [], []
+    for _ in range(args.repeats):
         start = time.perf_counter()
         results = jw.simulate(model)
         walls.append(time.perf_counter() - start)
+        simulations.append(results.summary["stats"]["simulation_wall_s"])
     stats = results.summary["stats"]
     t_last, x, y = tip(results, n)
     if results.status != "success" or abs(t_last - T_END) > 1e-9:
         print(f"N = {n}: {results.status} at t = {t_last:g} s: {results.message}", file=sys.stderr)
-    wall = statistics.median(walls)
+    simulation = statistics.median(simulations)
     return {
         "n": n,
-        "wall": wall,
+        "simulation": simulation,
+        "setup": statistics.median(w - s for w, s in zip(walls, simulations, strict=True)),
         "steps": stats["accepted_steps"],
         "rhs": stats["rhs_evaluations"],
-        "us_per_rhs": 1e6 * wall / stats["rhs_evaluations"],
         "rows": len(results.timeseries),
+        "us_per_step_body": 1e6 * simulation / stats["accepted_steps"] / n,
+        "peak_mb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024,
         "tip": (x, y),
         "status": results.status,
     }
 
 
-def growth_exponent(rows: list[dict]) -> float | None:
-    """Least-squares slope of log(wall) against log(N) over the sizes in ``GROWTH_RANGE``."""
-    fit = [r for r in rows if GROWTH_RANGE[0] <= r["n"] <= GROWTH_RANGE[1]]
-    if len(fit) < 2:
-        return None
-    log_n = np.log([r["n"] for r in fit])
-    log_wall = np.log([r["wall"] for r in fit])
-    return float(np.polyfit(log_n, log_wall, 1)[0])
+def in_child(n: int, argv: list[str]) -> dict:
+    """``measure`` of size n in a fresh Python process (its own peak memory)."""
+    command = [sys.executable, __file__, *argv, "--child", str(n)]
+    done = subprocess.run(command, capture_output=True, text=True, check=False)
+    sys.stderr.write(done.stderr)
+    if done.returncode != 0:
+        raise SystemExit(f"N = {n}: the child process failed (exit {done.returncode})")
+    return json.loads(done.stdout.strip().splitlines()[-1])
 
 
 def main() -> None:
@@ -140,35 +146,40 @@ def main() -> None:
     parser.add_argument(
         "--output-interval", type=float, default=OUTPUT_INTERVAL, help="between rows [s]"
     )
+    parser.add_argument("--child", type=int, help=argparse.SUPPRESS)  # one size, as JSON
     args = parser.parse_args()
+    if args.child is not None:
+        print(json.dumps(measure(args.child, args)))
+        return
 
     print(
         f"N-link chain, {MASS:g} kg x {LENGTH:g} m bars from {args.angle:g} deg at rest, "
         f"{T_END:g} s, a row every {args.output_interval * 1e3:g} ms; integrator "
         f"{args.integrator or 'default'}, formulation {args.formulation or 'default'}; "
-        f"median of {args.repeats} warm runs\n"
+        f"median of {args.repeats} warm runs, each size in a process of its own\n"
     )
     print(
-        "| N | wall [s] | accepted steps | RHS evaluations | output rows | µs per RHS "
-        "| tip x [m] | tip y [m] |"
+        "| N | simulation [s] | accepted steps | RHS evaluations | output rows "
+        "| µs per step and body | set-up [s] | peak memory [MB] | tip x [m] | tip y [m] |"
     )
-    print("|---|---|---|---|---|---|---|---|")
+    print("|---|---|---|---|---|---|---|---|---|---|")
+    forwarded = sys.argv[1:]
     rows = []
     for n in args.sizes:
-        model = chain_model(n, args.angle, args.integrator, args.formulation, args.output_interval)
-        row = measure(model, n, args.repeats)
+        row = in_child(n, forwarded)
         rows.append(row)
         flag = "" if row["status"] == "success" else f" ({row['status']})"
         print(
-            f"| {n} | {row['wall']:.4f} | {row['steps']} | {row['rhs']} | "
-            f"{row['rows']} | {row['us_per_rhs']:.1f} | "
+            f"| {n} | {row['simulation']:.4f} | {row['steps']} | {row['rhs']} | {row['rows']} | "
+            f"{row['us_per_step_body']:.2f} | {row['setup']:.2f} | {row['peak_mb']:.0f} | "
             f"{row['tip'][0]:.9f} | {row['tip'][1]:.9f}{flag} |",
             flush=True,
         )
-    exponent = growth_exponent(rows)
-    low, high = GROWTH_RANGE
-    text = "n/a (fewer than two sizes)" if exponent is None else f"{exponent:.2f}"
-    print(f"\ngrowth exponent (slope of log wall against log N, N = {low}-{high}): {text}")
+    reference = next((r for r in rows if r["n"] == REFERENCE_SIZE), rows[0])
+    ratios = ", ".join(
+        f"N = {r['n']}: {r['us_per_step_body'] / reference['us_per_step_body']:.2f}" for r in rows
+    )
+    print(f"\nµs per step and body against N = {reference['n']}'s: {ratios}")
 
 
 if __name__ == "__main__":

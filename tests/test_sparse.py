@@ -80,3 +80,24 @@ def test_pattern_covers_both_matrices(seed):
     permuted[np.ix_(pattern.row_order, pattern.row_order)] = jacobian @ jacobian.T
     _, expected = _envelope(permuted, pattern.row_first)
     np.testing.assert_allclose(schur, expected, rtol=1e-14, atol=1e-14)
+
+
+GROUND = -1
+OPEN_TREES = {  # bodies, joints (body pairs, two rows each), whether they close no loop
+    "pendulum chain": (3, [(GROUND, 0), (0, 1), (1, 2)], True),
+    "branched tree": (4, [(GROUND, 0), (0, 1), (0, 2), (2, 3)], True),
+    "floating pair": (2, [(0, 1)], True),
+    "four-bar": (3, [(GROUND, 0), (0, 1), (1, 2), (2, GROUND)], False),
+    "four-bar with a clearance joint": (3, [(GROUND, 0), (0, 1), (2, GROUND)], True),
+    "floating triangle": (3, [(0, 1), (1, 2), (2, 0)], False),
+}
+
+
+@pytest.mark.parametrize("case", OPEN_TREES)
+def test_open_tree_finds_the_loops(case):
+    # The closed loops of each graph are known by construction: a joint between bodies
+    # already connected through the others (or the ground) closes one.
+    bodies, joints, expected = OPEN_TREES[case]
+    rows = [pair for pair in joints for _ in range(2)] + [joints[0][::-1]]  # and a driver on one
+    pattern = build_pattern(np.array(rows, dtype=np.int64), bodies)
+    assert pattern.open_tree is expected

@@ -20,6 +20,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..kernels.jacobian import ENTRIES  # per row: (x, y, phi) of its first body, then second
+from .blocks import row_blocks
 
 
 class Pattern(NamedTuple):
@@ -35,6 +36,18 @@ class Pattern(NamedTuple):
     coord_ptr: NDArray[np.int64]  # (n + 1,)
     coord_diagonal: NDArray[np.int64]  # (n,) envelope index of each coordinate's diagonal
     row_entry_pairs: NDArray[np.int64]  # (m, 36) envelope index of entries e1, e2, or -1
+    open_tree: bool  # the rows join the bodies without a loop (``joins_without_loop``)
+
+
+def joins_without_loop(row_bodies: NDArray[np.int64], n_bodies: int) -> bool:
+    """Whether rows joining row_bodies (m, 2) (-1: the ground) close no loop of bodies.
+
+    Rows between the same two bodies (a joint's rows, a driver beside it) count as one edge;
+    the graph has no loop when each of its blocks is a single edge.
+    """
+    nodes = row_bodies + 1  # the ground is node 0
+    edges = np.unique(np.sort(nodes, axis=1), axis=0).shape[0]
+    return bool(np.unique(row_blocks(nodes, n_bodies + 1)).size == edges)
 
 
 def _cuthill_mckee(neighbours: list[set[int]]) -> list[int]:
@@ -125,6 +138,7 @@ def build_pattern(row_bodies: NDArray[np.int64], n_bodies: int) -> Pattern:
         coord_ptr=coord_ptr,
         coord_diagonal=coord_ptr[coord_order] + coord_order - coord_first[coord_order],
         row_entry_pairs=row_entry_pairs,
+        open_tree=joins_without_loop(row_bodies, n_bodies),
     )
 
 

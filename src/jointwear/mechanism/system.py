@@ -83,6 +83,7 @@ class Mechanism(NamedTuple):
     coord_ptr: NDArray[np.int64]
     coord_diagonal: NDArray[np.int64]
     row_entry_pairs: NDArray[np.int64]
+    open_tree: bool  # the joints close no loop (the augmented Lagrangian solves directly)
 
 
 class ElementRows(NamedTuple):

@@ -12,9 +12,9 @@ from typing import NamedTuple
 import numpy as np
 from numba import njit
 
-from ..jacobian import ENTRIES, norm
-from ..linalg import envelope_factor, envelope_solve
+from ..jacobian import norm
 from . import shared_arrays
+from .schur import schur_multipliers
 
 
 class BaumgarteScratch(NamedTuple):
@@ -42,33 +42,8 @@ def make_scratch(n: int, m: int, mech: NamedTuple) -> BaumgarteScratch:
 @njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def solve(wk, t, y, mech):
     """Lam from the Schur complement; False if it is singular."""
-    inv_mass = mech.inv_mass
-    row_coord = mech.row_coord
-    n = inv_mass.shape[0]
-    qd = y[n:]
-    cq = wk.cq
-    g = wk.g
-    schur = wk.schur
-    a2 = 2.0 * mech.baumgarte_alpha
-    b2 = mech.baumgarte_beta * mech.baumgarte_beta
-    schur[:] = 0.0
-    pairs = mech.row_pairs
-    for p in range(pairs.shape[0]):
-        r1, e1, r2, e2, col = pairs[p, 1], pairs[p, 2], pairs[p, 3], pairs[p, 4], pairs[p, 5]
-        schur[pairs[p, 0]] += cq[r1, e1] * inv_mass[col] * cq[r2, e2]
-    for r in range(wk.phi.shape[0]):
-        b = b2 * wk.phi[r] - wk.gamma[r] + a2 * wk.phi_t[r]
-        for e in range(ENTRIES):
-            col = row_coord[r, e]
-            if col >= 0:
-                b += cq[r, e] * (inv_mass[col] * g[col] + a2 * qd[col])
-        wk.x_rows[mech.row_order[r]] = b
-    if not envelope_factor(mech.row_first, mech.row_ptr, wk.schur, False):
-        return False
-    envelope_solve(mech.row_first, mech.row_ptr, wk.schur, wk.x_rows)
-    for r in range(wk.phi.shape[0]):
-        wk.lam[r] = wk.x_rows[mech.row_order[r]]
-    return True
+    n = mech.inv_mass.shape[0]
+    return schur_multipliers(wk, mech, y[n:], mech.baumgarte_alpha, mech.baumgarte_beta)
 
 
 @njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
