@@ -22,14 +22,16 @@ from .functions import value
 from .kinematics import angle, angular_velocity, point_position, point_velocity, rotate
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True, inline="always")
+@njit(
+    cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True, inline="always"
+)
 def _add(cq, r, side, b, k, value):
     """Add value at row r, coordinate k (0 x, 1 y, 2 phi) of its side-0 or side-1 body b."""
     if b >= 0:
         cq[r, 3 * side + k] += value
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _revolute(q, qd, i, j, s, r, phi, cq, gamma):
     aix, aiy = rotate(q, i, s[0, 0], s[0, 1])
     ajx, ajy = rotate(q, j, s[1, 0], s[1, 1])
@@ -51,7 +53,7 @@ def _revolute(q, qd, i, j, s, r, phi, cq, gamma):
     gamma[r + 1] = aiy * wi2 - ajy * wj2
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def line_projection(q, qd, i, j, s, vx, vy, r, phi, cq, gamma):
     """Row r: f = (A_i v) . (r_Pj - r_Pi), the second point projected on a body-i direction v.
 
@@ -84,7 +86,7 @@ def line_projection(q, qd, i, j, s, vx, vy, r, phi, cq, gamma):
     gamma[r] = -rest
 
 
-@njit(cache=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cfunc_wrapper=True)
 def evaluate_constraints(t, q, qd, mech, phi, cq, gamma, phi_t):
     """Fill Phi, Phi_q, gamma and Phi_t for all joints and drivers of the mechanism."""
     for r in range(cq.shape[0]):

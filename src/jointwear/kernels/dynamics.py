@@ -67,7 +67,7 @@ for _stub in (_solve, _project, _row_multipliers):
     by_kind(_stub, {kind: getattr(module, _stub.__name__[1:]) for kind, module in _BY_KIND.items()})
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def rhs(t, y, problem, ydot):
     """Write y' = (q', q'') into ydot; lambda is left in problem.dyn.lam. False if singular."""
     mech = problem.mech
@@ -91,7 +91,7 @@ def rhs(t, y, problem, ydot):
     return True
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def project(t, y, problem):
     """After an accepted step ending at (t [s], y): the 2-norm of Phi it ended with [m, rad].
 
@@ -101,13 +101,13 @@ def project(t, y, problem):
     return _project(problem.dyn, t, y, problem.mech)
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def row_multipliers(problem):
     """After ``rhs`` for an output row: lam as reported (least-norm where not unique)."""
     _row_multipliers(problem.dyn, problem.mech)
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def constraint_norm(dyn):
     """2-norm of Phi from the last evaluation [m, rad]."""
     return norm(dyn.phi)

@@ -34,7 +34,7 @@ from .kinematics import (
 )
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _apply(q, g, b, sx, sy, fx, fy):
     """Add force (fx, fy) [N] acting at body point s [m] to g."""
     if b < 0:
@@ -45,7 +45,7 @@ def _apply(q, g, b, sx, sy, fx, fy):
     g[3 * b + 2] += ax * fy - ay * fx
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _apply_at(q, g, b, px, py, fx, fy):
     """Add force (fx, fy) [N] acting at global point p [m] to body b's entries of g."""
     if b < 0:
@@ -55,12 +55,12 @@ def _apply_at(q, g, b, px, py, fx, fy):
     g[3 * b + 2] += (px - q[3 * b]) * fy - (py - q[3 * b + 1]) * fx
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _function_value(mech, fn, t, q, qd):
     return value(mech, fn, t, q, qd)[0]
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _joint_force(q, g, mech, e, force):
     """Apply ``force`` [N] along load e's joint axis: on body 2 at its point, minus on body 1."""
     b1 = mech.force_body[e, 0]
@@ -72,7 +72,7 @@ def _joint_force(q, g, mech, e, force):
     _apply_at(q, g, b1, px, py, -force * ux, -force * uy)
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _spring_axis(q, mech, e):
     """Unit vector u from point 1 to point 2 of load e, and the length between them [m]."""
     s = mech.force_point[e]
@@ -86,7 +86,7 @@ def _spring_axis(q, mech, e):
     return dx / length, dy / length, length
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _spring_rate(q, qd, mech, e, ux, uy):
     """Rate of change of the length between the two points of load e [m/s]."""
     s = mech.force_point[e]
@@ -95,7 +95,7 @@ def _spring_rate(q, qd, mech, e, ux, uy):
     return ux * (v2x - v1x) + uy * (v2y - v1y)
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _spring_tension(q, qd, mech, e):
     """Tension [N] of spring-damper e (positive pulls its points together), and its axis u."""
     ux, uy, length = _spring_axis(q, mech, e)
@@ -105,7 +105,7 @@ def _spring_tension(q, qd, mech, e):
     return k * (length - l0) + c * _spring_rate(q, qd, mech, e, ux, uy), ux, uy
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _spring_torque(q, qd, mech, e):
     """Torque [N m] rotational spring-damper e puts on its first body (minus that on the second)."""
     k, c, a0 = mech.force_param[e, 0], mech.force_param[e, 1], mech.force_param[e, 2]
@@ -116,7 +116,7 @@ def _spring_torque(q, qd, mech, e):
     return k * rel + c * rate
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def applied_forces(t, q, qd, mech, g):
     """Fill g [N, N, N m] with gravity and every applied load at time t [s]."""
     nb = mech.mass.shape[0]
@@ -155,7 +155,7 @@ def applied_forces(t, q, qd, mech, g):
             g[0] = math.nan
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def write_loads(t, q, qd, mech, row, c):
     """Write every load but gravity, as applied at time t [s], from column c of row.
 
@@ -191,7 +191,7 @@ def write_loads(t, q, qd, mech, row, c):
     return c
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def potential_energy(q, mech):
     """Gravitational and spring potential energy [J] (zero at the origin / free length)."""
     energy = 0.0

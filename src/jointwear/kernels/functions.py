@@ -29,7 +29,7 @@ from .codes import ArgumentKind, FunctionKind
 from .kinematics import angle, angular_velocity, point_position, point_velocity, rotate
 
 
-@njit(cache=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cfunc_wrapper=True)
 def evaluate(kind, p, data, x):
     """Return f(x), f'(x), f''(x) for a function-table row (kind code, parameters, data)."""
     if kind == FunctionKind.HARMONIC:
@@ -50,7 +50,7 @@ def evaluate(kind, p, data, x):
     return f, fd, fdd
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _spline(p, data, x):
     first = int(p[0])
     n = int(p[1])
@@ -67,7 +67,7 @@ def _spline(p, data, x):
     return f, (3.0 * c[0] * d + 2.0 * c[1]) * d + c[2], 6.0 * c[0] * d + 2.0 * c[1]
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _interval(breaks, x):
     """The interval i, 0 <= i < n, with breaks[i] <= x < breaks[i + 1] (the last one closed).
 
@@ -85,7 +85,7 @@ def _interval(breaks, x):
     return low
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _fourier(p, data, x):
     first = int(p[0])
     omega = p[2]
@@ -106,7 +106,7 @@ def _fourier(p, data, x):
     return f, fd, fdd
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def argument(mech, fn, t, q, qd):
     """The argument x of function row fn at time t and state (q, qd), with x' and x''."""
     kind = mech.function_argument[fn, 0]
@@ -126,7 +126,7 @@ def argument(mech, fn, t, q, qd):
     return math.nan, math.nan, math.nan
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _slide(geometry, b1, b2, q, qd):
     """Slide [m] of point 2 of body b2 from point 1 of body b1 along b1's axis, and its rate.
 
@@ -143,7 +143,7 @@ def _slide(geometry, b1, b2, q, qd):
     return dx * ux + dy * uy, (v2x - v1x) * ux + (v2y - v1y) * uy + w * (dy * ux - dx * uy)
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def value(mech, fn, t, q, qd):
     """F = f(x), F' and F'' [SI] of function row fn at time t, state (q, qd); 0 for fn < 0."""
     if fn < 0:

@@ -11,7 +11,7 @@ from numba import njit
 ENTRIES = 6  # Jacobian entries per row: x, y, phi of its first body, then of its second
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def row_dot(mech, cq, r, v):
     """Phi_q,r . v for a coordinate vector v."""
     row_coord = mech.row_coord
@@ -23,7 +23,7 @@ def row_dot(mech, cq, r, v):
     return total
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def add_transpose_product(mech, cq, coef, out):
     """Out += Phi_q^T coef for a row vector coef."""
     row_coord = mech.row_coord
@@ -34,7 +34,7 @@ def add_transpose_product(mech, cq, coef, out):
                 out[col] += cq[r, e] * coef[r]
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def norm(v):
     """2-norm of a vector."""
     total = 0.0

@@ -16,7 +16,7 @@ import math
 from numba import njit
 
 
-@njit(cache=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cfunc_wrapper=True)
 def rotate(q, b, sx, sy):
     """Return A(phi_b) s [m]; the ground's points are already global."""
     if b < 0:
@@ -26,7 +26,7 @@ def rotate(q, b, sx, sy):
     return c * sx - s * sy, s * sx + c * sy
 
 
-@njit(cache=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cfunc_wrapper=True)
 def point_position(q, b, sx, sy):
     """Global position r_b + A_b s of a body point [m]."""
     ax, ay = rotate(q, b, sx, sy)
@@ -35,7 +35,7 @@ def point_position(q, b, sx, sy):
     return q[3 * b] + ax, q[3 * b + 1] + ay
 
 
-@njit(cache=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cfunc_wrapper=True)
 def point_velocity(q, qd, b, sx, sy):
     """Global velocity of a body point [m/s]: r_b' + omega_b perp(A_b s)."""
     if b < 0:
@@ -45,13 +45,13 @@ def point_velocity(q, qd, b, sx, sy):
     return qd[3 * b] - w * ay, qd[3 * b + 1] + w * ax
 
 
-@njit(cache=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cfunc_wrapper=True)
 def angle(q, b):
     """Body angle [rad]; 0 for the ground."""
     return 0.0 if b < 0 else q[3 * b + 2]
 
 
-@njit(cache=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cfunc_wrapper=True)
 def angular_velocity(qd, b):
     """Body angular velocity [rad/s]; 0 for the ground."""
     return 0.0 if b < 0 else qd[3 * b + 2]

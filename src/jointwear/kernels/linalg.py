@@ -16,7 +16,7 @@ from numba import njit
 PIVOT_TOLERANCE = 1e-13  # a pivot below this fraction of the diagonal is singular
 
 
-@njit(cache=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cfunc_wrapper=True)
 def envelope_factor(first, ptr, a, per_row):
     """Overwrite the envelope a with its Cholesky factor L (a = L L^T).
 
@@ -50,7 +50,7 @@ def envelope_factor(first, ptr, a, per_row):
     return True
 
 
-@njit(cache=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cfunc_wrapper=True)
 def envelope_solve(first, ptr, factor, x):
     """Solve L L^T x = b in place (x holds b on entry), L from ``envelope_factor``."""
     size = first.shape[0]

@@ -101,13 +101,13 @@ class Scratch(NamedTuple):
     event_prev: np.ndarray  # (ne,) user event values at the current time
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def event_value(events, e, y):
     """User event e: the watched coordinate minus its value."""
     return y[3 * events.body[e] + events.coordinate[e]] - events.value[e]
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _begin_periods(problem, log, t, y):
     """Open or close every slot's contact period at the step end (t [s], y); log onsets."""
     n = problem.mech.inv_mass.shape[0]
@@ -124,7 +124,7 @@ def _begin_periods(problem, log, t, y):
             log.counters[Counter.IMPACTS] = i + 1
 
 
-@njit(cache=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cfunc_wrapper=True)
 def start(problem, integ, events, log, scratch, t0, y0, h0):
     """Begin a run at (t0 [s], y0) with first step h0 [s]; False if the first solve fails."""
     _begin_periods(problem, log, t0, y0)
@@ -136,7 +136,7 @@ def start(problem, integ, events, log, scratch, t0, y0, h0):
     return ok
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _excess(problem, slot, y):
     """Penetration of a slot beyond its tolerance at state y [m]."""
     n = problem.mech.inv_mass.shape[0]
@@ -145,7 +145,9 @@ def _excess(problem, slot, y):
     )
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True, inline="always")
+@njit(
+    cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True, inline="always"
+)
 def _crossing(problem, events, integ, scratch, kind, index, t):
     """Value at t [s] of a user event (kind 0), a slot's onset (1) or its separation (2)."""
     if kind == 0:
@@ -158,7 +160,9 @@ def _crossing(problem, events, integ, scratch, kind, index, t):
     return excess
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True, inline="always")
+@njit(
+    cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True, inline="always"
+)
 def _locate(problem, events, integ, scratch, kind, index, ta, ga, tb, gb, g_tol):
     """Crossing time in [ta, tb] [s] by the Illinois method on the step's interpolant.
 
@@ -190,7 +194,9 @@ def _locate(problem, events, integ, scratch, kind, index, ta, ga, tb, gb, g_tol)
     return tb
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True, inline="always")
+@njit(
+    cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True, inline="always"
+)
 def _log_events(problem, events, integ, log, scratch, t_old, t_new, y_new):
     for e in range(scratch.event_prev.shape[0]):
         g0 = scratch.event_prev[e]
@@ -211,7 +217,9 @@ def _log_events(problem, events, integ, log, scratch, t_old, t_new, y_new):
             log.counters[Counter.EVENTS] += 1
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True, inline="always")
+@njit(
+    cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True, inline="always"
+)
 def _contact_cut(problem, events, integ, scratch, t_old, y_old, t_new, y_new):
     """Earliest change of contact inside the step just accepted [s], or t_new if none.
 
@@ -244,7 +252,9 @@ def _contact_cut(problem, events, integ, scratch, t_old, y_old, t_new, y_new):
     return t_first, midpoint_known
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True, inline="always")
+@njit(
+    cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True, inline="always"
+)
 def _write_rows(problem, integ, ctl, log, scratch, out, rows, t):
     """Write the output rows due by time t [s]; return (row count, False if singular)."""
     k = log.counters[Counter.OUTPUT_ROWS]
@@ -259,7 +269,9 @@ def _write_rows(problem, integ, ctl, log, scratch, out, rows, t):
     return rows, True
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True, inline="always")
+@njit(
+    cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True, inline="always"
+)
 def _write_end_row(problem, integ, ctl, log, out, rows):
     """Write the next output row if it is due exactly at the end of the step just accepted.
 
@@ -277,7 +289,9 @@ def _write_end_row(problem, integ, ctl, log, out, rows):
     return rows
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True, inline="always")
+@njit(
+    cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True, inline="always"
+)
 def _landing(ctl, k):
     """Time the next step should end on if cheap [s]: row k's, when rows are a step apart."""
     times = ctl.output_times
@@ -286,13 +300,17 @@ def _landing(ctl, k):
     return ctl.t_end
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True, inline="always")
+@njit(
+    cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True, inline="always"
+)
 def _copy(source, target):
     for i in range(source.shape[0]):
         target[i] = source[i]
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True, inline="always")
+@njit(
+    cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True, inline="always"
+)
 def _after_step(problem, integ, events, ctl, log, scratch, out, rows, h):
     """Contact changes, wear, events and rows of the step just accepted.
 
@@ -343,7 +361,7 @@ def _after_step(problem, integ, events, ctl, log, scratch, out, rows, h):
     return rows, True
 
 
-@njit(cache=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cfunc_wrapper=True)
 def advance(problem, integ, events, ctl, log, scratch, out, t_stop, step_stop):
     """Integrate past t_stop [s] (or to the end); return (Status, rows written into out).
 

@@ -15,7 +15,7 @@ from .dynamics import constraint_norm, rhs, row_multipliers
 from .forces import potential_energy, write_loads
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def kinetic_energy(qd, mech):
     """Kinetic energy 1/2 q'^T M q' [J]."""
     energy = 0.0
@@ -24,7 +24,9 @@ def kinetic_energy(qd, mech):
     return energy
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True, inline="always")
+@njit(
+    cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True, inline="always"
+)
 def _reaction(dyn, mech, jt, side, k):
     """Component k of the force joint jt's rows apply to its first (side 0) or second body [N]."""
     r0 = mech.joint_row[jt]
@@ -34,7 +36,7 @@ def _reaction(dyn, mech, jt, side, k):
     return force
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def write_row(t, y, problem, ydot, row):
     """Fill one output row for state y at time t [s]. Returns False if the solve failed."""
     ok = rhs(t, y, problem, ydot)
@@ -44,7 +46,7 @@ def write_row(t, y, problem, ydot, row):
     return ok
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def fill_row(t, y, problem, ydot, row):
     """Fill one output row from the last evaluation ``rhs(t, y, problem, ydot)`` [s].
 

@@ -64,7 +64,7 @@ def _struct_from(typingctx, record):
     return struct_type(record), codegen
 
 
-@njit(cache=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cfunc_wrapper=True)
 def to_struct(record):
     """A new struct with the fields of the named tuple ``record`` (arrays shared)."""
     return _struct_from(record)

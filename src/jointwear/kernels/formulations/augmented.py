@@ -89,7 +89,7 @@ def make_scratch(n: int, m: int, mech: NamedTuple) -> AugmentedScratch:
     )
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _factor_rows(mech, wk):
     """Add Phi_q^T W Phi_q (W = wk.weight) to the diagonal in wk.lead, and factor it."""
     cq = wk.cq
@@ -106,7 +106,7 @@ def _factor_rows(mech, wk):
     return envelope_factor(mech.coord_first, mech.coord_ptr, lead, True)
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _factor_lead(mech, wk):
     """Penalties w_r and the factor of M + Phi_q^T W Phi_q. False if not positive definite."""
     inv_mass = mech.inv_mass
@@ -126,7 +126,7 @@ def _factor_lead(mech, wk):
     return _factor_rows(mech, wk)
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _solve_lead(mech, wk, force, coef, out):
     """Out = (M + Phi_q^T W Phi_q)^-1 (force + Phi_q^T coef), with the factored lead."""
     x = wk.x_coords
@@ -145,7 +145,7 @@ def _solve_lead(mech, wk, force, coef, out):
         out[c] = x[order[c]]
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _residual(mech, wk, r, qdd):
     """Row r's residual Phi_q,r q'' - gamma_r, and the sum of its terms' sizes."""
     residual = -wk.gamma[r]
@@ -159,7 +159,7 @@ def _residual(mech, wk, r, qdd):
     return residual, terms
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _direct(wk, y, mech):
     """Lam (and q'') from the Schur complement if it factors and meets the rows to SETTLED.
 
@@ -187,7 +187,7 @@ def _direct(wk, y, mech):
     return True
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def solve(wk, t, y, mech):
     """Lam (and q'' in wk.qdd) for the target c = gamma. False if the iterations fail.
 
@@ -201,7 +201,7 @@ def solve(wk, t, y, mech):
     return _iterate(wk, t, y, mech)
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _iterate(wk, t, y, mech):
     """The iterations from lam = 0, to SETTLED (or UNSETTLED at MAX_ITERATIONS)."""
     if not _factor_lead(mech, wk):
@@ -252,7 +252,7 @@ def _iterate(wk, t, y, mech):
     return True
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _factored_at(wk, t, y, by_schur):
     """Record that the factor of schur (by_schur) or of lead belongs to time t [s], state y."""
     wk.evaluated[0] = t
@@ -260,7 +260,7 @@ def _factored_at(wk, t, y, by_schur):
     wk.by_schur[0] = by_schur
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def row_multipliers(wk, mech):
     """With redundant constraints, or near a singular position, lam becomes the least-norm set.
 
@@ -312,13 +312,13 @@ def row_multipliers(wk, mech):
         wk.lam[r] = row_dot(mech, wk.cq, r, z)
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _evaluated_at(wk, t, y):
     """Whether the last evaluation (and its factor) was at time t [s] and state y."""
     return wk.evaluated[0] == t and np.array_equal(wk.evaluated[1:], y)
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _velocity_violation(mech, wk, qd):
     """Phi' = Phi_q q' + Phi_t into wk.x_rows; returns its 2-norm [m/s, rad/s]."""
     for r in range(wk.phi.shape[0]):
@@ -326,7 +326,7 @@ def _velocity_violation(mech, wk, qd):
     return norm(wk.x_rows)
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _factor_projection(mech, wk):
     """Factor the matrix the corrections solve with; False if neither can be factored.
 
@@ -337,7 +337,7 @@ def _factor_projection(mech, wk):
     return wk.by_schur[0] or _factor_lead(mech, wk)
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _correct(mech, wk, v, violation):
     """Add to v the M-orthogonal correction toward Phi_q dv = -violation (factored).
 
@@ -363,7 +363,7 @@ def _correct(mech, wk, v, violation):
         v[c] += wk.qdd[c]
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def project(wk, t, y, mech):
     """The 2-norm of Phi the step ended with [m, rad]; then y is moved onto Phi = 0, Phi' = 0.
 

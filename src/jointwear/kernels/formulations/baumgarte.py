@@ -39,19 +39,19 @@ def make_scratch(n: int, m: int, mech: NamedTuple) -> BaumgarteScratch:
     )
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def solve(wk, t, y, mech):
     """Lam from the Schur complement; False if it is singular."""
     n = mech.inv_mass.shape[0]
     return schur_multipliers(wk, mech, y[n:], mech.baumgarte_alpha, mech.baumgarte_beta)
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def project(wk, t, y, mech):
     """The 2-norm of Phi at the step's end, from its last evaluation there [m, rad]."""
     return norm(wk.phi)
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def row_multipliers(wk, mech):
     """Lam as solved: unique, the constraints being independent."""

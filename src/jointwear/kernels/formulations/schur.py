@@ -14,7 +14,7 @@ from ..jacobian import ENTRIES
 from ..linalg import envelope_factor, envelope_solve
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def schur_factor(wk, mech):
     """Phi_q M^-1 Phi_q^T of wk.cq into wk.schur, and its factor; False if singular."""
     inv_mass = mech.inv_mass
@@ -28,7 +28,7 @@ def schur_factor(wk, mech):
     return envelope_factor(mech.row_first, mech.row_ptr, schur, False)
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def schur_solve(wk, mech, x):
     """Solve (Phi_q M^-1 Phi_q^T) x = b in place (x holds b on entry), with wk.schur factored.
 
@@ -42,7 +42,7 @@ def schur_solve(wk, mech, x):
         x[r] = wk.x_rows[order[r]]
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def schur_multipliers(wk, mech, qd, alpha, beta):
     """Lam into wk.lam for c = gamma - 2 alpha Phi' - beta^2 Phi [1/s]; False if singular.
 

@@ -58,7 +58,7 @@ REJECTED = 1
 ABM_RESTART_FRACTION = 0.25  # first Adams step after an onset, of the step cut there (order 1)
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _forced(h, err, ctl, counters):
     """Whether a failed error test is accepted anyway because h is at the minimum step."""
     if h <= ctl.min_step * (1.0 + 1e-12) and err <= 1e300:
@@ -67,7 +67,7 @@ def _forced(h, err, ctl, counters):
     return False
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _rk_attempt(st, problem, ctl, counters, t_land):
     h = rk_begin(st, ctl.max_step, ctl.min_step, ctl.t_end, t_land)
     min_step = h <= ctl.min_step * (1.0 + 1e-12)
@@ -89,7 +89,7 @@ def _rk_attempt(st, problem, ctl, counters, t_land):
     return REJECTED
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _abm_attempt(st, problem, ctl, counters, t_land):
     t_new = abm_predict(st, ctl.max_step, ctl.min_step, ctl.t_end, t_land, st.p)
     h = st.scal[S_H]
@@ -113,42 +113,42 @@ def _abm_attempt(st, problem, ctl, counters, t_land):
     return REJECTED
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _rk_restart(st, t, y, f0, h_last, h_min):
     rk_start(st, t, y, f0, h_last)
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _abm_restart(st, t, y, f0, h_last, h_min):
     abm_start(st, t, y, f0, max(ABM_RESTART_FRACTION * h_last, h_min))
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _rk_step_start(st):
     return st.scal[S_TOLD], st.y_old
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _abm_step_start(st):
     return st.scal[S_T] - st.scal[S_HOLD], st.y_old
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _time(st):
     return st.scal[S_T]  # the same slot in both methods
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _state(st):
     return st.y
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _rk_derivative(st):
     return st.k[0]  # FSAL: the last stage, moved to the first by rk_accept
 
 
-@njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _abm_derivative(st):
     return st.yp
 

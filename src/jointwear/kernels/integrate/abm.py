@@ -128,7 +128,7 @@ def make_abm_state(n: int) -> AbmState:
     )
 
 
-@njit(cache=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cfunc_wrapper=True)
 def abm_start(st: AbmState, t: float, y: np.ndarray, yp: np.ndarray, h: float) -> None:
     """Start, or restart at order 1, from ``(t, y)``; all history is discarded.
 
@@ -158,7 +158,7 @@ def abm_start(st: AbmState, t: float, y: np.ndarray, yp: np.ndarray, h: float) -
     st.ints[I_HIT] = 0
 
 
-@njit(cache=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cfunc_wrapper=True)
 def _coefficients(st: AbmState, h: float, k: int) -> None:
     """psi, beta, phi* and g_1..g_{k+2} for a step ``h`` at order ``k``."""
     n = st.y.shape[0]
@@ -188,7 +188,7 @@ def _coefficients(st: AbmState, h: float, k: int) -> None:
         st.g[i] = acc
 
 
-@njit(cache=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cfunc_wrapper=True)
 def abm_predict(
     st: AbmState,
     h_max: float,
@@ -226,7 +226,7 @@ def abm_predict(
     return st.scal[S_TNEW]
 
 
-@njit(cache=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cfunc_wrapper=True)
 def abm_correct(
     st: AbmState, yp_pred: np.ndarray, rtol: float, atol: float, y_corr: np.ndarray
 ) -> float:
@@ -276,7 +276,7 @@ def abm_correct(
     return erk
 
 
-@njit(cache=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cfunc_wrapper=True)
 def _new_step(h: float, erk: float, k: int) -> float:
     """Shampine-Gordon step after success: double, keep or shrink (error target 1/2)."""
     if erk * 2.0 ** (k + 1) <= 0.5:
@@ -287,7 +287,7 @@ def _new_step(h: float, erk: float, k: int) -> float:
     return h * max(0.5, min(0.9, r))
 
 
-@njit(cache=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cfunc_wrapper=True)
 def abm_accept(st: AbmState, y_corr: np.ndarray, yp_corr: np.ndarray) -> None:
     """Accept the step: update the differences, advance, choose next order and step.
 
@@ -359,7 +359,7 @@ def abm_accept(st: AbmState, y_corr: np.ndarray, yp_corr: np.ndarray) -> None:
     st.scal[S_HNEXT] = h_next
 
 
-@njit(cache=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cfunc_wrapper=True)
 def abm_reject(st: AbmState) -> float:
     """Reject the step (history untouched); the step and maybe the order drop.
 
@@ -383,7 +383,7 @@ def abm_reject(st: AbmState) -> float:
     return h_next
 
 
-@njit(cache=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cfunc_wrapper=True)
 def _interpolate(st: AbmState, t_out: float, out: np.ndarray, derivative: bool) -> None:
     """y(t_out) = y + h sum_i D_i(sigma) phi_i(n+1), or y'(t_out) = sum_i d_i(sigma) phi_i."""
     h = st.scal[S_HOLD]
@@ -412,7 +412,7 @@ def _interpolate(st: AbmState, t_out: float, out: np.ndarray, derivative: bool) 
         out[j] = acc if derivative else st.y[j] + acc
 
 
-@njit(cache=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cfunc_wrapper=True)
 def abm_interpolate(st: AbmState, t_out: float, out: np.ndarray) -> None:
     """Solution at ``t_out`` [s] in the last accepted step ``[t - scal[S_HOLD], t]``.
 
@@ -426,7 +426,7 @@ def abm_interpolate(st: AbmState, t_out: float, out: np.ndarray) -> None:
         _interpolate(st, t_out, out, False)
 
 
-@njit(cache=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cfunc_wrapper=True)
 def abm_interpolate_derivative(st: AbmState, t_out: float, out: np.ndarray) -> None:
     """Time derivative of the interpolant at ``t_out`` (``yp`` before any step)."""
     if st.ints[I_KOLD] == 0:
@@ -436,7 +436,7 @@ def abm_interpolate_derivative(st: AbmState, t_out: float, out: np.ndarray) -> N
         _interpolate(st, t_out, out, True)
 
 
-@njit(cache=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cfunc_wrapper=True)
 def abm_interpolate_ends(st: AbmState, t_out: float, out: np.ndarray) -> None:
     """Cubic Hermite interpolant of (y, y') at both ends of the last accepted step.
 

@@ -139,7 +139,7 @@ def make_rk_state(n: int, tableau: Tableau = DOPRI5) -> RkState:
     )
 
 
-@njit(cache=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cfunc_wrapper=True)
 def rk_start(st, t, y, f0, h):
     """Start, or restart after a discontinuity, from (t [s], y); forget all history.
 
@@ -160,7 +160,7 @@ def rk_start(st, t, y, f0, h):
     st.count[C_HIT] = 0
 
 
-@njit(cache=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cfunc_wrapper=True)
 def rk_begin(st, h_max, h_min, t_stop, t_land):
     """Choose the step to try [s] within [h_min, h_max]; it lands on t_stop, or t_land if cheap.
 
@@ -174,7 +174,7 @@ def rk_begin(st, h_max, h_min, t_stop, t_land):
     return h
 
 
-@njit(cache=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cfunc_wrapper=True)
 def rk_stage(st, s):
     """Form the input of stage s (1 .. stages-1) in st.ystage; return its time [s]."""
     a = st.tableau.a
@@ -190,7 +190,7 @@ def rk_stage(st, s):
     return st.scal[S_T] + st.tableau.c[s] * h
 
 
-@njit(cache=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cfunc_wrapper=True)
 def rk_error(st, rtol, atol):
     """Error norm of the step just computed (all stages filled); accept when <= 1."""
     e = st.tableau.e
@@ -203,7 +203,7 @@ def rk_error(st, rtol, atol):
     return error_norm(st.err, st.y, st.ystage, rtol, atol)
 
 
-@njit(cache=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cfunc_wrapper=True)
 def rk_accept(st, err):
     """Accept the step: dense output, advance t and y, FSAL, propose the next step.
 
@@ -238,7 +238,7 @@ def rk_accept(st, err):
     st.count[C_HIT] = 0
 
 
-@njit(cache=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cfunc_wrapper=True)
 def rk_reject(st, err):
     """Reject the step (t, y, k[0] unchanged); return the new proposal [s]."""
     h_next = st.scal[S_H] * reject_factor(err, st.tableau.order_embedded)
@@ -249,7 +249,7 @@ def rk_reject(st, err):
     return h_next
 
 
-@njit(cache=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cfunc_wrapper=True)
 def rk_interpolate(st, t_out, out):
     """Dense output at t_out [s] in the last accepted step (its end exactly: y).
 
@@ -269,7 +269,7 @@ def rk_interpolate(st, t_out, out):
         out[i] = st.y_old[i] + acc
 
 
-@njit(cache=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cfunc_wrapper=True)
 def rk_interpolate_derivative(st, t_out, out):
     """Time derivative of the dense output at t_out [s] (k[0] before any step)."""
     n = st.y.shape[0]

@@ -38,7 +38,7 @@ ROUNDING = 1.0 + 1e-12  # h_max may be exceeded by this factor to land on a time
 LAND_SHORTEN = 0.1  # a step may shrink by this fraction of itself to land on an output row
 
 
-@njit(cache=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cfunc_wrapper=True)
 def error_norm(err: np.ndarray, y0: np.ndarray, y1: np.ndarray, rtol: float, atol: float) -> float:
     """Weighted RMS norm of an error vector.
 
@@ -70,7 +70,7 @@ def error_norm(err: np.ndarray, y0: np.ndarray, y1: np.ndarray, rtol: float, ato
     return math.sqrt(s / n)
 
 
-@njit(cache=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cfunc_wrapper=True)
 def pi_factor(err: float, err_prev: float, order: int, beta: float) -> float:
     """Step-size factor ``h_new / h`` after an accepted step (PI control).
 
@@ -101,7 +101,7 @@ def pi_factor(err: float, err_prev: float, order: int, beta: float) -> float:
     return min(FAC_MAX, max(FAC_MIN, fac))
 
 
-@njit(cache=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cfunc_wrapper=True)
 def reject_factor(err: float, order: int) -> float:
     """Step-size factor ``h_new / h`` after a rejected step (I-control, at most 1).
 
@@ -126,7 +126,7 @@ def reject_factor(err: float, order: int) -> float:
     return min(1.0, max(FAC_MIN, fac))
 
 
-@njit(cache=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cfunc_wrapper=True)
 def clip_step(
     t: float, h: float, h_min: float, h_max: float, t_stop: float, t_land: float
 ) -> float:
@@ -167,7 +167,7 @@ def clip_step(
     return h
 
 
-@njit(cache=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy", no_cfunc_wrapper=True)
 def step_end(t: float, h: float, t_stop: float, t_land: float) -> float:
     """End time of the step ``h`` from ``t`` returned by ``clip_step`` [s].
 
