@@ -286,6 +286,38 @@ def test_an_interrupt_lost_in_a_native_callback_is_delivered_again(capsys):
         signal.signal(signal.SIGINT, previous_handler)
 
 
+def test_a_lost_interrupt_is_raised_again_outside_the_hook():
+    """The handler that catches the interrupt sent again raises KeyboardInterrupt itself (as
+    the command line's handlers do): that must come out in ordinary code, not in the hook."""
+    import ctypes
+
+    from jointwear.engine.interrupts import redeliver_lost_interrupts
+
+    def interrupt(signum, frame):
+        raise KeyboardInterrupt
+
+    previous_handler = signal.signal(signal.SIGINT, interrupt)
+    previous_hook = sys.unraisablehook
+    caught = False
+    try:
+        redeliver_lost_interrupts()
+
+        @ctypes.CFUNCTYPE(None)
+        def callback():
+            raise KeyboardInterrupt
+
+        try:
+            callback()  # the hook runs and returns: nothing raised here
+            for _ in range(1000):
+                time.sleep(0.001)
+        except KeyboardInterrupt:
+            caught = True
+    finally:
+        sys.unraisablehook = previous_hook
+        signal.signal(signal.SIGINT, previous_handler)
+    assert caught
+
+
 # An interrupt that no command catches (here: one raised as `run` begins), which typer turns
 # into exit 130 without a word. The process ends by os._exit then, hence a child process.
 UNCAUGHT_INTERRUPT = """

@@ -11,6 +11,7 @@ from contextlib import contextmanager
 
 _open: tuple[int, list[bool]] | None = None  # (process id, flag) of the outermost open block
 _cut_short = False  # an interrupt raised inside an interruptible block (see cut_short)
+REDELIVERY_DELAY_S = 0.01  # a lost interrupt is sent again this long after [s]
 
 
 @contextmanager
@@ -92,15 +93,21 @@ def redeliver_lost_interrupts() -> None:
     A signal handler that raises ``KeyboardInterrupt`` while native code is calling back into
     Python (numba's compiler writing its cache through a ctypes callback) has its exception
     printed as "ignored" and lost: the process would go on as if never interrupted. Under
-    this ``sys.unraisablehook`` such an interrupt is raised again as a SIGINT instead, which
-    Python then handles in ordinary code; any other unraisable exception is printed as usual.
+    this ``sys.unraisablehook`` such an interrupt is sent again as a SIGINT instead, a moment
+    later, which Python then handles in ordinary code; any other unraisable exception is
+    printed as usual.
     """
     sys.unraisablehook = _redeliver
 
 
 def _redeliver(unraisable: sys.UnraisableHookArgs) -> None:
     if unraisable.exc_type is not None and issubclass(unraisable.exc_type, KeyboardInterrupt):
-        signal.raise_signal(signal.SIGINT)
+        # Raised here, the signal's handler would run inside this hook, and its
+        # KeyboardInterrupt, escaping the hook, would be lost again: a helper thread sends it
+        # once the hook has returned, so that it reaches the main thread in ordinary code.
+        resend = threading.Timer(REDELIVERY_DELAY_S, os.kill, (os.getpid(), signal.SIGINT))
+        resend.daemon = True
+        resend.start()
         return
     sys.__unraisablehook__(unraisable)
 
